@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config git
-  libsdl2-dev libtinyxml2-dev libpng-dev zlib1g-dev libhidapi-dev libgpiod-dev libimgui-dev libteem-dev
+  libsdl2-dev libtinyxml2-dev libpng-dev zlib1g-dev libhidapi-dev libgpiod-dev libimgui-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
   xvfb xdotool imagemagick xauth
