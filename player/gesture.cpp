@@ -1,0 +1,233 @@
+#include "player/gesture.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <system_error>
+
+namespace vimg {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> split_fields(std::string_view line) {
+  std::vector<std::string_view> fields;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', start);
+    if (comma == std::string_view::npos) {
+      fields.push_back(trim(line.substr(start)));
+      return fields;
+    }
+    fields.push_back(trim(line.substr(start, comma - start)));
+    start = comma + 1;
+  }
+}
+
+// A finite decimal number (locale independent; no hex, NaN or infinity).
+bool parse_number(std::string_view s, double& out) {
+  if (s.empty()) return false;
+  for (char c : s) {
+    if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E')) return false;
+  }
+  if (s.front() == '+') s.remove_prefix(1);
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
+  return r.ec == std::errc{} && r.ptr == s.data() + s.size() && std::isfinite(out);
+}
+
+bool parse_finger(std::string_view s, int& out) {
+  if (s.empty()) return false;
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
+  return r.ec == std::errc{} && r.ptr == s.data() + s.size();
+}
+
+std::string format_number(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+}  // namespace
+
+double Gesture::start_time_s() const {
+  double t = 0.0;
+  bool any = false;
+  for (const auto& s : strokes) {
+    if (s.points.empty()) continue;
+    t = any ? std::min(t, s.points.front().time_s) : s.points.front().time_s;
+    any = true;
+  }
+  return t;
+}
+
+double Gesture::end_time_s() const {
+  double t = 0.0;
+  bool any = false;
+  for (const auto& s : strokes) {
+    if (s.points.empty()) continue;
+    t = any ? std::max(t, s.points.back().time_s) : s.points.back().time_s;
+    any = true;
+  }
+  return t;
+}
+
+GestureParseResult parse_gesture_csv(std::string_view text, const std::string& file_name) {
+  GestureParseResult result;
+  auto error = [&](int line, const std::string& problem) {
+    result.errors.push_back(file_name + ":" + std::to_string(line) + ": error: " + problem);
+  };
+
+  struct FingerState {
+    bool down = false;
+    double last_time_s = 0.0;
+    bool has_time = false;
+    std::size_t stroke = 0;  // index into strokes while down
+  };
+  std::map<int, FingerState> fingers;
+  Gesture gesture;
+  bool header_seen = false;
+  int line_no = 0;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = trim(text.substr(pos, end - pos));
+    pos = end + 1;
+    ++line_no;
+    if (result.errors.size() >= 50) break;
+    if (line.empty() || line.front() == '#') continue;
+    const auto f = split_fields(line);
+    if (!header_seen) {
+      const bool is_header = f.size() == 6 && f[0] == "time_s" && f[1] == "finger" && f[2] == "x_mm" &&
+                             f[3] == "y_mm" && f[4] == "pressure" && f[5] == "phase";
+      if (!is_header) {
+        error(line_no, "expected the header row 'time_s,finger,x_mm,y_mm,pressure,phase'");
+        return result;
+      }
+      header_seen = true;
+      continue;
+    }
+    if (f.size() != 6) {
+      error(line_no, "expected 6 fields (time_s,finger,x_mm,y_mm,pressure,phase), found " +
+                         std::to_string(f.size()));
+      continue;
+    }
+    GesturePoint p;
+    int finger = 0;
+    bool ok = true;
+    if (!parse_number(f[0], p.time_s)) {
+      error(line_no, "time_s '" + std::string(f[0]) + "' is not a finite number");
+      ok = false;
+    }
+    if (!parse_finger(f[1], finger) || finger < 0 || finger > kMaxGestureFinger) {
+      error(line_no, "finger '" + std::string(f[1]) + "' is not an integer in 0.." +
+                         std::to_string(kMaxGestureFinger));
+      ok = false;
+    }
+    if (!parse_number(f[2], p.x_mm)) {
+      error(line_no, "x_mm '" + std::string(f[2]) + "' is not a finite number");
+      ok = false;
+    }
+    if (!parse_number(f[3], p.y_mm)) {
+      error(line_no, "y_mm '" + std::string(f[3]) + "' is not a finite number");
+      ok = false;
+    }
+    if (f[4].empty()) {
+      p.pressure = 1.0;
+    } else if (!parse_number(f[4], p.pressure) || p.pressure < 0.0 || p.pressure > 1.0) {
+      error(line_no, "pressure '" + std::string(f[4]) + "' is not a number in [0,1]");
+      ok = false;
+    }
+    int phase = -1;
+    if (f[5] == "down") phase = 0;
+    else if (f[5] == "move") phase = 1;
+    else if (f[5] == "up") phase = 2;
+    else {
+      error(line_no, "phase '" + std::string(f[5]) + "' is not down, move or up");
+      ok = false;
+    }
+    if (!ok) continue;
+
+    FingerState& st = fingers[finger];
+    if (st.has_time && p.time_s < st.last_time_s) {
+      error(line_no, "time " + format_number(p.time_s) + " s is before the previous row of finger " +
+                         std::to_string(finger) + " (" + format_number(st.last_time_s) + " s)");
+      continue;
+    }
+    st.has_time = true;
+    st.last_time_s = p.time_s;
+    if (phase == 0) {
+      if (st.down) {
+        error(line_no, "finger " + std::to_string(finger) + " is already down");
+        continue;
+      }
+      st.down = true;
+      st.stroke = gesture.strokes.size();
+      gesture.strokes.push_back(GestureStroke{finger, {p}});
+    } else {
+      if (!st.down) {
+        error(line_no, "finger " + std::to_string(finger) + " is not down (" + std::string(f[5]) +
+                           " without a preceding down)");
+        continue;
+      }
+      gesture.strokes[st.stroke].points.push_back(p);
+      if (phase == 2) st.down = false;
+    }
+  }
+  if (!header_seen && result.errors.empty()) {
+    error(std::max(line_no, 1), "missing the header row 'time_s,finger,x_mm,y_mm,pressure,phase'");
+  }
+  if (!result.errors.empty()) return result;
+  // Fingers still down at the end lift at their last row (nothing to add: the stroke ends there).
+  std::stable_sort(gesture.strokes.begin(), gesture.strokes.end(), [](const auto& a, const auto& b) {
+    return a.points.front().time_s < b.points.front().time_s;
+  });
+  result.gesture = std::move(gesture);
+  return result;
+}
+
+GestureParseResult load_gesture_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    GestureParseResult r;
+    r.errors.push_back(path.string() + ": error: cannot open the gesture file");
+    return r;
+  }
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parse_gesture_csv(ss.str(), path.string());
+}
+
+std::string write_gesture_csv(const Gesture& gesture) {
+  struct Row {
+    double time_s;
+    int finger;
+    const GesturePoint* p;
+    const char* phase;
+  };
+  std::vector<Row> rows;
+  for (const auto& s : gesture.strokes) {
+    for (std::size_t i = 0; i < s.points.size(); ++i) {
+      const char* phase = i == 0 ? "down" : (i + 1 == s.points.size() ? "up" : "move");
+      rows.push_back({s.points[i].time_s, s.finger, &s.points[i], phase});
+    }
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.time_s < b.time_s; });
+  std::string out = "time_s,finger,x_mm,y_mm,pressure,phase\n";
+  for (const Row& r : rows) {
+    out += format_number(r.time_s) + "," + std::to_string(r.finger) + "," + format_number(r.p->x_mm) + "," +
+           format_number(r.p->y_mm) + "," + format_number(r.p->pressure) + "," + r.phase + "\n";
+  }
+  return out;
+}
+
+}  // namespace vimg

@@ -1,0 +1,31 @@
+#pragma once
+// Offline rendering: the same engine as the real-time thread, run as fast as possible. Used by
+// `vimg render` and the tests.
+#include <cstddef>
+#include <cstdint>
+
+#include "player/drive_sink.hpp"
+#include "player/gesture.hpp"
+#include "player/scene.hpp"
+
+namespace vimg {
+
+struct OfflineRenderOptions {
+  double sample_rate_hz = 8000.0;  // 1 .. 48000
+  std::size_t block_samples = 64;
+  std::size_t max_contacts = 512;
+  // After the gesture ends, rendering goes on until every ring-down has finished, at most this long.
+  double max_tail_s = 10.0;
+};
+
+struct OfflineRenderResult {
+  std::uint64_t samples = 0;
+  double start_time_s = 0.0;  // time of the first sample (the gesture's start, or 0 if later)
+  std::uint64_t refused_contacts = 0;
+};
+
+// Samples are at start_time_s + n / rate. Calls sink.open(), write() per block, then close().
+OfflineRenderResult render_gesture(const Scene& scene, const Gesture& gesture, DriveSink& sink,
+                                   const OfflineRenderOptions& options = {});
+
+}  // namespace vimg
