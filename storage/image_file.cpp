@@ -1,0 +1,81 @@
+// load_image_file and save_image_file: XML or PNG on disk (spec sections 1, 2 and 4).
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include "storage/atomic_file.hpp"
+#include "storage/image_io.hpp"
+#include "storage/image_limits.hpp"
+#include "storage/picture.hpp"
+#include "storage/png_codec.hpp"
+
+namespace vimg {
+
+namespace {
+
+LoadResult failure(const std::string& file, std::string message) {
+  LoadResult result;
+  result.diagnostics.push_back({Diagnostic::Severity::error, file, 0, std::move(message)});
+  return result;
+}
+
+bool has_png_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return ext == ".png";
+}
+
+}  // namespace
+
+LoadResult load_image_file(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) return failure(name, "is a directory, not an image file");
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) return failure(name, std::string("cannot open: ") + std::strerror(errno));
+  std::string bytes;
+  char buffer[65536];
+  bool too_large = false;
+  for (;;) {
+    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
+    bytes.append(buffer, n);
+    if (bytes.size() > kMaxFileBytes) {
+      too_large = true;
+      break;
+    }
+    if (n < sizeof buffer) break;
+  }
+  const bool read_error = std::ferror(file) != 0;
+  std::fclose(file);
+  if (too_large) {
+    return failure(name, "file is larger than " + std::to_string(kMaxFileBytes / (1024 * 1024)) + " MiB");
+  }
+  if (read_error) return failure(name, "cannot read the file");
+  if (!looks_like_png(bytes)) return parse_image_xml(bytes, name);
+
+  const PngText text = read_png_text(bytes);
+  if (!text.error.empty()) return failure(name, "damaged PNG: " + text.error);
+  if (!text.xml) {
+    return failure(name, "this PNG has no 'vibroimage' text chunk, so it is not a vibroimage (a plain picture "
+                         "cannot be opened as an image)");
+  }
+  return parse_image_xml(*text.xml, name);
+}
+
+std::optional<std::string> save_image_file(const Image& image, const std::filesystem::path& path,
+                                           const SaveOptions& options) {
+  const std::string xml = write_image_xml(image);
+  if (!has_png_extension(path)) return write_file_atomically(path, xml);
+  RgbRaster raster;
+  if (auto error = draw_picture(image, options.scale_px_per_mm, raster)) return path.string() + ": " + *error;
+  const auto pixels_per_metre = static_cast<std::uint32_t>(std::lround(options.scale_px_per_mm * 1000.0));
+  const EncodedPng png = encode_png(raster, pixels_per_metre, xml);
+  if (!png.error.empty()) return path.string() + ": " + png.error;
+  return write_file_atomically(path, png.bytes);
+}
+
+}  // namespace vimg

@@ -1,0 +1,44 @@
+#include "storage/number_text.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <system_error>
+
+namespace vimg {
+
+namespace {
+
+bool looks_hexadecimal(std::string_view text) {
+  if (!text.empty() && text.front() == '-') text.remove_prefix(1);
+  return text.size() >= 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X');
+}
+
+}  // namespace
+
+ParsedNumber parse_decimal(std::string_view text) {
+  if (text.empty()) return std::string("is empty, expected a number");
+  if (looks_hexadecimal(text)) return std::string("is hexadecimal, expected a decimal number");
+  double value = 0.0;
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  const auto [ptr, ec] = std::from_chars(begin, end, value, std::chars_format::general);
+  if (ec == std::errc::result_out_of_range) return std::string("is out of the range of a number");
+  if (ec != std::errc() || ptr != end) {
+    if (text.find(',') != std::string_view::npos && ec == std::errc())
+      return std::string("is not a number (the decimal separator is '.')");
+    return std::string("is not a number");
+  }
+  if (std::isnan(value)) return std::string("is NaN, expected a finite number");
+  if (std::isinf(value)) return std::string("is infinite, expected a finite number");
+  return value;
+}
+
+std::string format_decimal(double value) {
+  std::array<char, 64> buffer{};
+  const auto [ptr, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  if (ec != std::errc()) return "0";
+  return std::string(buffer.data(), ptr);
+}
+
+}  // namespace vimg

@@ -1,0 +1,21 @@
+#pragma once
+// Locale-independent decimal numbers for the image format (spec section 1, "Coordinates and
+// numbers"): read with std::from_chars, written with std::to_chars in the shortest form that
+// reads back to the same double.
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace vimg {
+
+// Either the value or a reason the text is not an acceptable number ("is not a number", ...).
+using ParsedNumber = std::variant<double, std::string>;
+
+// Accepts exactly a decimal number: optional '-', digits, optional fraction and exponent.
+// Rejects surrounding spaces, '+', ',' as separator, hexadecimal, NaN and infinities.
+ParsedNumber parse_decimal(std::string_view text);
+
+// The shortest decimal text that parse_decimal reads back to exactly `value` (finite values).
+std::string format_decimal(double value);
+
+}  // namespace vimg

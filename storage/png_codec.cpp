@@ -1,0 +1,211 @@
+// PNG encoding and decoding with libpng. libpng reports errors by longjmp: the functions that call
+// setjmp hold no C++ objects with destructors across it, and the callbacks never throw.
+#include "storage/png_codec.hpp"
+
+#include <png.h>
+
+#include <csetjmp>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "storage/image_limits.hpp"
+
+namespace vimg {
+
+namespace {
+
+constexpr int kMaxPngSide = 200000;                  // refuse larger declared sizes before decoding
+constexpr double kMaxDecodedPixels = 4.0 * kMaxPngPixels;
+
+struct ErrorSink {
+  char message[256] = {};
+};
+
+extern "C" void on_png_error(png_structp png, png_const_charp message) {
+  auto* sink = static_cast<ErrorSink*>(png_get_error_ptr(png));
+  std::snprintf(sink->message, sizeof sink->message, "%s", message != nullptr ? message : "unknown libpng error");
+  png_longjmp(png, 1);
+}
+
+extern "C" void on_png_warning(png_structp, png_const_charp) {}
+
+// --- writing -------------------------------------------------------------------------------------
+
+struct WriteTarget {
+  std::string* out = nullptr;
+  bool out_of_memory = false;
+};
+
+extern "C" void on_png_write(png_structp png, png_bytep data, png_size_t length) {
+  auto* target = static_cast<WriteTarget*>(png_get_io_ptr(png));
+  try {
+    target->out->append(reinterpret_cast<const char*>(data), length);
+  } catch (...) {
+    target->out_of_memory = true;
+  }
+  if (target->out_of_memory) png_error(png, "out of memory while encoding");
+}
+
+extern "C" void on_png_flush(png_structp) {}
+
+// Returns true on success; on failure `sink` holds the reason. No C++ objects live here.
+bool encode_into(const RgbRaster& raster, std::uint32_t pixels_per_metre, char* xml_text, WriteTarget* target,
+                 ErrorSink* sink) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, sink, on_png_error, on_png_warning);
+  if (png == nullptr) {
+    std::snprintf(sink->message, sizeof sink->message, "cannot create a PNG encoder");
+    return false;
+  }
+  png_infop info = png_create_info_struct(png);
+  if (info == nullptr) {
+    png_destroy_write_struct(&png, nullptr);
+    std::snprintf(sink->message, sizeof sink->message, "cannot create a PNG encoder");
+    return false;
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_set_write_fn(png, target, on_png_write, on_png_flush);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(raster.width), static_cast<png_uint_32>(raster.height), 8,
+               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_pHYs(png, info, pixels_per_metre, pixels_per_metre, PNG_RESOLUTION_METER);
+  png_text text;
+  std::memset(&text, 0, sizeof text);
+  text.compression = PNG_ITXT_COMPRESSION_zTXt;
+  text.key = const_cast<png_charp>(kPngTextKeyword.data());
+  text.text = xml_text;
+  text.lang = nullptr;
+  text.lang_key = nullptr;
+  png_set_text(png, info, &text, 1);
+  png_write_info(png, info);
+  const std::size_t stride = static_cast<std::size_t>(raster.width) * 3;
+  for (int y = 0; y < raster.height; ++y) {
+    png_write_row(png, raster.rgb.data() + static_cast<std::size_t>(y) * stride);
+  }
+  png_write_end(png, info);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+// --- reading -------------------------------------------------------------------------------------
+
+struct ReadSource {
+  const unsigned char* data = nullptr;
+  std::size_t size = 0;
+  std::size_t offset = 0;
+};
+
+extern "C" void on_png_read(png_structp png, png_bytep out, png_size_t length) {
+  auto* source = static_cast<ReadSource*>(png_get_io_ptr(png));
+  if (length > source->size - source->offset) png_error(png, "the file ends too early");
+  std::memcpy(out, source->data + source->offset, length);
+  source->offset += length;
+}
+
+struct ReadState {
+  ReadSource source;
+  unsigned char* row = nullptr;  // malloc'ed; freed by the caller on every path
+  std::string* text = nullptr;   // receives the `vibroimage` text
+  bool found = false;
+  bool out_of_memory = false;
+};
+
+void copy_text(png_structp png, png_infop info, ReadState* state) {
+  png_textp texts = nullptr;
+  int count = 0;
+  png_get_text(png, info, &texts, &count);
+  for (int i = 0; i < count && !state->found; ++i) {
+    if (texts[i].key != nullptr && std::strcmp(texts[i].key, kPngTextKeyword.data()) == 0) {
+      const std::size_t length =
+          texts[i].compression >= PNG_ITXT_COMPRESSION_NONE ? texts[i].itxt_length : texts[i].text_length;
+      try {
+        state->text->assign(texts[i].text != nullptr ? texts[i].text : "", texts[i].text != nullptr ? length : 0);
+        state->found = true;
+      } catch (...) {
+        state->out_of_memory = true;
+      }
+    }
+  }
+}
+
+// Returns true when the whole PNG decodes; no C++ objects live here.
+bool decode_text(ReadState* state, ErrorSink* sink) {
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, sink, on_png_error, on_png_warning);
+  if (png == nullptr) {
+    std::snprintf(sink->message, sizeof sink->message, "cannot create a PNG decoder");
+    return false;
+  }
+  png_infop info = png_create_info_struct(png);
+  if (info == nullptr) {
+    png_destroy_read_struct(&png, nullptr, nullptr);
+    std::snprintf(sink->message, sizeof sink->message, "cannot create a PNG decoder");
+    return false;
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return false;
+  }
+  png_set_read_fn(png, &state->source, on_png_read);
+  png_set_user_limits(png, kMaxPngSide, kMaxPngSide);
+  png_set_chunk_malloc_max(png, kMaxFileBytes + 1024 * 1024);
+  png_read_info(png, info);
+  const double pixels = static_cast<double>(png_get_image_width(png, info)) *
+                        static_cast<double>(png_get_image_height(png, info));
+  if (pixels > kMaxDecodedPixels) png_error(png, "the picture is too large to decode");
+  const int passes = png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  const png_size_t row_bytes = png_get_rowbytes(png, info);
+  state->row = static_cast<unsigned char*>(std::malloc(row_bytes == 0 ? 1 : row_bytes));
+  if (state->row == nullptr) png_error(png, "out of memory");
+  const png_uint_32 height = png_get_image_height(png, info);
+  for (int pass = 0; pass < passes; ++pass) {
+    for (png_uint_32 y = 0; y < height; ++y) png_read_row(png, state->row, nullptr);
+  }
+  png_read_end(png, info);
+  copy_text(png, info, state);
+  png_destroy_read_struct(&png, &info, nullptr);
+  return true;
+}
+
+}  // namespace
+
+bool looks_like_png(std::string_view bytes) {
+  return bytes.size() >= 8 && png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) == 0;
+}
+
+EncodedPng encode_png(const RgbRaster& raster, std::uint32_t pixels_per_metre, std::string_view xml) {
+  EncodedPng result;
+  std::string text(xml);  // NUL-terminated for libpng
+  WriteTarget target;
+  target.out = &result.bytes;
+  ErrorSink sink;
+  if (!encode_into(raster, pixels_per_metre, text.data(), &target, &sink)) {
+    result.bytes.clear();
+    result.error = std::string("cannot encode PNG: ") + sink.message;
+  }
+  return result;
+}
+
+PngText read_png_text(std::string_view bytes) {
+  PngText result;
+  std::string text;
+  ReadState state;
+  state.source.data = reinterpret_cast<const unsigned char*>(bytes.data());
+  state.source.size = bytes.size();
+  state.text = &text;
+  ErrorSink sink;
+  const bool decoded = decode_text(&state, &sink);
+  std::free(state.row);
+  if (!decoded) {
+    result.error = sink.message;
+  } else if (state.out_of_memory) {
+    result.error = "out of memory reading the vibroimage text";
+  } else if (state.found) {
+    result.xml = std::move(text);
+  }
+  return result;
+}
+
+}  // namespace vimg

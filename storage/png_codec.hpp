@@ -1,0 +1,37 @@
+#pragma once
+// PNG images of a vibroimage (spec section 2): encoding a picture with the pHYs and `vibroimage`
+// iTXt chunks, and reading the XML back out of a PNG. libpng errors never escape: every failure
+// becomes a message.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "storage/raster.hpp"
+
+namespace vimg {
+
+inline constexpr std::string_view kPngTextKeyword = "vibroimage";
+
+// True when `bytes` start with the PNG signature.
+bool looks_like_png(std::string_view bytes);
+
+struct EncodedPng {
+  std::string bytes;  // the PNG file
+  std::string error;  // empty on success
+};
+
+// Encodes an RGB picture with a pHYs chunk of `pixels_per_metre` and an iTXt chunk `vibroimage`
+// holding `xml` (compressed).
+EncodedPng encode_png(const RgbRaster& raster, std::uint32_t pixels_per_metre, std::string_view xml);
+
+struct PngText {
+  std::optional<std::string> xml;  // the `vibroimage` text; empty when the PNG has none
+  std::string error;               // libpng's complaint when the PNG is damaged; empty if fine
+};
+
+// Decodes the whole PNG (so damage anywhere is reported) and returns its `vibroimage` text.
+PngText read_png_text(std::string_view bytes);
+
+}  // namespace vimg

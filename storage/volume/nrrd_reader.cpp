@@ -1,0 +1,530 @@
+#include <zlib.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "storage/volume/nrrd.hpp"
+
+namespace vimg {
+namespace {
+
+enum class SampleType { i8, u8, i16, u16, i32, u32, i64, u64, f32, f64 };
+
+std::size_t sample_bytes(SampleType t) {
+  switch (t) {
+    case SampleType::i8: case SampleType::u8: return 1;
+    case SampleType::i16: case SampleType::u16: return 2;
+    case SampleType::i32: case SampleType::u32: case SampleType::f32: return 4;
+    case SampleType::i64: case SampleType::u64: case SampleType::f64: return 8;
+  }
+  return 1;
+}
+
+std::optional<SampleType> parse_type(const std::string& name) {
+  static const std::map<std::string, SampleType> types = {
+      {"signed char", SampleType::i8}, {"int8", SampleType::i8}, {"int8_t", SampleType::i8},
+      {"uchar", SampleType::u8}, {"unsigned char", SampleType::u8}, {"uint8", SampleType::u8},
+      {"uint8_t", SampleType::u8},
+      {"short", SampleType::i16}, {"short int", SampleType::i16}, {"signed short", SampleType::i16},
+      {"signed short int", SampleType::i16}, {"int16", SampleType::i16}, {"int16_t", SampleType::i16},
+      {"ushort", SampleType::u16}, {"unsigned short", SampleType::u16}, {"unsigned short int", SampleType::u16},
+      {"uint16", SampleType::u16}, {"uint16_t", SampleType::u16},
+      {"int", SampleType::i32}, {"signed int", SampleType::i32}, {"int32", SampleType::i32},
+      {"int32_t", SampleType::i32},
+      {"uint", SampleType::u32}, {"unsigned int", SampleType::u32}, {"uint32", SampleType::u32},
+      {"uint32_t", SampleType::u32},
+      {"longlong", SampleType::i64}, {"long long", SampleType::i64}, {"long long int", SampleType::i64},
+      {"signed long long", SampleType::i64}, {"signed long long int", SampleType::i64},
+      {"int64", SampleType::i64}, {"int64_t", SampleType::i64},
+      {"ulonglong", SampleType::u64}, {"unsigned long long", SampleType::u64},
+      {"unsigned long long int", SampleType::u64}, {"uint64", SampleType::u64}, {"uint64_t", SampleType::u64},
+      {"float", SampleType::f32}, {"double", SampleType::f64}};
+  const auto it = types.find(name);
+  if (it == types.end()) return std::nullopt;
+  return it->second;
+}
+
+std::string trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return std::string(s);
+}
+
+std::vector<std::string> split_words(const std::string& s) {
+  std::vector<std::string> words;
+  std::istringstream in(s);
+  std::string w;
+  while (in >> w) words.push_back(w);
+  return words;
+}
+
+// A finite decimal number, or nothing (std::from_chars is locale-independent).
+std::optional<double> parse_number(std::string_view text) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+std::optional<long long> parse_integer(std::string_view text) {
+  long long value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+// "(a,b,c)" -> three numbers.
+std::optional<Vec3> parse_vector(const std::string& text) {
+  if (text.size() < 2 || text.front() != '(' || text.back() != ')') return std::nullopt;
+  std::array<double, 3> v{};
+  std::string_view inner(text.data() + 1, text.size() - 2);
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t comma = inner.find(',');
+    if ((i < 2) != (comma != std::string_view::npos)) return std::nullopt;
+    const auto number = parse_number(trim(inner.substr(0, comma)));
+    if (!number) return std::nullopt;
+    v[static_cast<std::size_t>(i)] = *number;
+    if (i < 2) inner.remove_prefix(comma + 1);
+  }
+  return Vec3{v[0], v[1], v[2]};
+}
+
+// Splits "(a,b,c) (d,e,f) none" into its items.
+std::vector<std::string> split_vectors(const std::string& text) {
+  std::vector<std::string> items;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (text[i] == ' ' || text[i] == '\t') { ++i; continue; }
+    std::size_t end = text[i] == '(' ? text.find(')', i) : text.find_first_of(" \t", i);
+    if (end == std::string::npos) end = text.size() - 1;
+    else if (text[i] != '(') --end;
+    items.push_back(text.substr(i, end - i + 1));
+    i = end + 1;
+  }
+  return items;
+}
+
+class Reader {
+ public:
+  Reader(std::string_view bytes, const std::string& file) : bytes_(bytes), file_(file) {}
+
+  NrrdLoadResult run() {
+    if (parse_header() && check_header()) decode();
+    if (has_errors(result_.diagnostics)) {
+      result_.scalar.reset();
+      result_.vector.reset();
+    }
+    return std::move(result_);
+  }
+
+ private:
+  void error(int line, std::string message) {
+    result_.diagnostics.push_back({Diagnostic::Severity::error, file_, line, std::move(message)});
+  }
+
+  // Fields that carry nothing the volume backend uses but are valid NRRD.
+  static bool ignorable(const std::string& field) {
+    static const std::set<std::string> names = {
+        "content", "space", "centers", "centerings", "thicknesses", "labels", "units", "min", "max",
+        "old min", "oldmin", "old max", "oldmax", "measurement frame", "axis mins", "axismins",
+        "axis maxs", "axismaxs", "sample units", "sampleunits", "number", "block size", "blocksize"};
+    return names.count(field) > 0;
+  }
+
+  bool parse_header() {
+    std::size_t pos = 0;
+    int line_number = 0;
+    bool saw_blank = false;
+    while (pos < bytes_.size()) {
+      const std::size_t eol = bytes_.find('\n', pos);
+      if (eol == std::string_view::npos) {
+        break;
+      }
+      const std::string_view raw_line = bytes_.substr(pos, eol - pos);
+      ++line_number;
+      pos = eol + 1;
+      std::string line(raw_line);
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      if (line_number == 1) {
+        if (line.size() != 8 || line.compare(0, 7, "NRRD000") != 0 || line[7] < '1' || line[7] > '5') {
+          error(1, "not a NRRD file: the first line must be NRRD0001 to NRRD0005");
+          return false;
+        }
+        continue;
+      }
+      if (line.empty()) {
+        saw_blank = true;
+        data_offset_ = pos;
+        data_line_ = line_number + 1;
+        break;
+      }
+      if (line[0] == '#') continue;
+      if (line.find(":=") != std::string::npos) continue;  // key/value pair
+      const std::size_t colon = line.find(": ");
+      if (colon == std::string::npos) {
+        error(line_number, "expected 'field: value', got '" + line.substr(0, 60) + "'");
+        continue;
+      }
+      const std::string field = line.substr(0, colon);
+      const std::string value = trim(std::string_view(line).substr(colon + 2));
+      if (fields_.count(field)) {
+        error(line_number, "field '" + field + "' given twice (first on line " + std::to_string(fields_[field].line) + ")");
+        continue;
+      }
+      fields_[field] = {value, line_number};
+    }
+    if (line_number == 0) {
+      error(0, "empty file, expected a NRRD header");
+      return false;
+    }
+    if (!saw_blank) {
+      error(line_number, "the header does not end with an empty line before the data");
+      return false;
+    }
+    for (const auto& [field, entry] : fields_) {
+      static const std::set<std::string> known = {"type", "dimension", "sizes", "encoding", "endian",
+                                                  "spacings", "space directions", "space origin",
+                                                  "space dimension", "kinds", "space units",
+                                                  "byte skip", "byteskip", "line skip", "lineskip",
+                                                  "data file", "datafile"};
+      if (!known.count(field) && !ignorable(field)) error(entry.line, "unknown field '" + field + "'");
+    }
+    return !has_errors(result_.diagnostics);
+  }
+
+  struct Entry {
+    std::string value;
+    int line = 0;
+  };
+
+  const Entry* field(const std::string& name) const {
+    const auto it = fields_.find(name);
+    return it == fields_.end() ? nullptr : &it->second;
+  }
+  const Entry* required(const std::string& name) {
+    const Entry* e = field(name);
+    if (!e) error(0, "missing required field '" + name + "'");
+    return e;
+  }
+
+  bool check_header() {
+    for (const char* detached : {"data file", "datafile"}) {
+      if (const Entry* e = field(detached)) {
+        error(e->line, "detached data ('data file') is not supported: attach the data to the header");
+      }
+    }
+    for (const char* skip : {"byte skip", "byteskip", "line skip", "lineskip"}) {
+      if (const Entry* e = field(skip); e && e->value != "0") error(e->line, std::string("'") + skip + "' must be 0");
+    }
+    const Entry* type = required("type");
+    const Entry* dimension = required("dimension");
+    const Entry* sizes = required("sizes");
+    const Entry* encoding = required("encoding");
+    if (!type || !dimension || !sizes || !encoding) return false;
+
+    if (const auto t = parse_type(type->value)) type_ = *t;
+    else error(type->line, "unsupported type '" + type->value + "'");
+
+    const auto dim = parse_integer(dimension->value);
+    if (!dim || (*dim != 3 && *dim != 4)) {
+      error(dimension->line, "dimension must be 3 (scalar) or 4 (3-vector), got '" + dimension->value + "'");
+      return false;
+    }
+    dimension_ = static_cast<int>(*dim);
+    vector_ = dimension_ == 4;
+    const auto size_words = split_words(sizes->value);
+    if (size_words.size() != static_cast<std::size_t>(dimension_)) {
+      error(sizes->line, "sizes has " + std::to_string(size_words.size()) + " values, dimension is " + std::to_string(dimension_));
+      return false;
+    }
+    std::size_t samples = 1;
+    for (std::size_t i = 0; i < size_words.size(); ++i) {
+      const auto n = parse_integer(size_words[i]);
+      if (!n || *n < 1 || *n > static_cast<long long>(kMaxNrrdSamples)) {
+        error(sizes->line, "size '" + size_words[i] + "' is not a positive integer within limits");
+        return false;
+      }
+      sizes_[i] = static_cast<int>(*n);
+      samples *= static_cast<std::size_t>(*n);
+      if (samples > kMaxNrrdSamples) {
+        error(sizes->line, "volume has more than " + std::to_string(kMaxNrrdSamples) + " samples");
+        return false;
+      }
+    }
+    samples_ = samples;
+    if (vector_ && sizes_[0] != 3) {
+      error(sizes->line, "a 4-dimensional volume must have 3 components on its first axis, got " + std::to_string(sizes_[0]));
+      return false;
+    }
+    if (const Entry* kinds = field("kinds"); kinds && vector_) {
+      const auto k = split_words(kinds->value);
+      static const std::set<std::string> vector_kinds = {"vector", "3-vector", "covariant-vector", "normal", "3-color", "RGB-color", "list", "point"};
+      if (k.empty() || !vector_kinds.count(k[0])) error(kinds->line, "the first axis of a vector volume must have a vector kind, got '" + (k.empty() ? std::string() : k[0]) + "'");
+    }
+
+    if (encoding->value == "raw") encoding_ = Encoding::raw;
+    else if (encoding->value == "gzip" || encoding->value == "gz") encoding_ = Encoding::gzip;
+    else if (encoding->value == "ascii" || encoding->value == "text" || encoding->value == "txt") encoding_ = Encoding::ascii;
+    else error(encoding->line, "unsupported encoding '" + encoding->value + "' (raw, gzip or ascii)");
+
+    if (encoding_ != Encoding::ascii && sample_bytes(type_) > 1) {
+      const Entry* endian = field("endian");
+      if (!endian) error(0, "missing field 'endian', required for multi-byte binary samples");
+      else if (endian->value == "little") big_endian_ = false;
+      else if (endian->value == "big") big_endian_ = true;
+      else error(endian->line, "endian must be 'little' or 'big', got '" + endian->value + "'");
+    }
+    if (const Entry* sd = field("space dimension"); sd && sd->value != "3") {
+      error(sd->line, "space dimension must be 3");
+    }
+    if (const Entry* units = field("space units")) {
+      for (const auto& u : split_words(units->value)) {
+        if (u != "\"mm\"" && u != "mm") error(units->line, "space units must be millimetres (\"mm\"), got " + u);
+      }
+    }
+    geometry_.size = {sizes_[vector_ ? 1 : 0], sizes_[vector_ ? 2 : 1], sizes_[vector_ ? 3 : 2]};
+    read_geometry();
+    return !has_errors(result_.diagnostics);
+  }
+
+  void read_geometry() {
+    const Entry* spacings = field("spacings");
+    const Entry* directions = field("space directions");
+    if (spacings && directions) {
+      error(directions->line, "give either 'spacings' or 'space directions', not both");
+      return;
+    }
+    Vec3 spacing_mm{1.0, 1.0, 1.0};
+    if (spacings) {
+      const auto words = split_words(spacings->value);
+      if (words.size() != static_cast<std::size_t>(dimension_)) {
+        error(spacings->line, "spacings needs " + std::to_string(dimension_) + " values");
+        return;
+      }
+      std::array<double, 3> s{};
+      for (int i = 0; i < 3; ++i) {
+        const auto v = parse_number(words[static_cast<std::size_t>(i + (vector_ ? 1 : 0))]);
+        if (!v || !(*v > 0.0)) {
+          error(spacings->line, "spacing '" + words[static_cast<std::size_t>(i + (vector_ ? 1 : 0))] + "' is not a positive number");
+          return;
+        }
+        s[static_cast<std::size_t>(i)] = *v;
+      }
+      spacing_mm = {s[0], s[1], s[2]};
+    } else if (directions) {
+      const auto items = split_vectors(directions->value);
+      if (items.size() != static_cast<std::size_t>(dimension_)) {
+        error(directions->line, "space directions needs " + std::to_string(dimension_) + " entries");
+        return;
+      }
+      if (vector_ && items[0] != "none") {
+        error(directions->line, "the vector axis must have space direction 'none'");
+        return;
+      }
+      std::array<double, 3> s{};
+      for (int i = 0; i < 3; ++i) {
+        const auto v = parse_vector(items[static_cast<std::size_t>(i + (vector_ ? 1 : 0))]);
+        if (!v) {
+          error(directions->line, "space direction '" + items[static_cast<std::size_t>(i + (vector_ ? 1 : 0))] + "' is not (x,y,z)");
+          return;
+        }
+        const std::array<double, 3> c{v->x, v->y, v->z};
+        for (int j = 0; j < 3; ++j) {
+          if (j != i && c[static_cast<std::size_t>(j)] != 0.0) {
+            error(directions->line, "space directions must be axis-aligned (a diagonal matrix)");
+            return;
+          }
+        }
+        if (!(c[static_cast<std::size_t>(i)] > 0.0)) {
+          error(directions->line, "space directions must be positive along each axis");
+          return;
+        }
+        s[static_cast<std::size_t>(i)] = c[static_cast<std::size_t>(i)];
+      }
+      spacing_mm = {s[0], s[1], s[2]};
+    }
+    Vec3 origin_mm;
+    if (const Entry* origin = field("space origin")) {
+      const auto v = parse_vector(origin->value);
+      if (!v) {
+        error(origin->line, "space origin must be (x,y,z), got '" + origin->value + "'");
+        return;
+      }
+      origin_mm = *v;
+    }
+    geometry_.spacing_m = spacing_mm * 1e-3;
+    geometry_.origin_m = origin_mm * 1e-3;
+  }
+
+  void decode() {
+    const std::string_view payload = bytes_.substr(data_offset_);
+    std::vector<float> samples(samples_);
+    if (encoding_ == Encoding::ascii) {
+      if (!decode_ascii(payload, samples)) return;
+    } else {
+      const std::size_t expected = samples_ * sample_bytes(type_);
+      std::string inflated;
+      std::string_view binary = payload;
+      if (encoding_ == Encoding::gzip) {
+        if (!inflate(payload, expected, inflated)) return;
+        binary = inflated;
+      }
+      if (binary.size() != expected) {
+        error(data_line_, "data holds " + std::to_string(binary.size()) + " bytes, the header needs " + std::to_string(expected));
+        return;
+      }
+      convert(binary, samples);
+    }
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      if (!std::isfinite(samples[i])) {
+        error(data_line_, "sample " + std::to_string(i) + " is not a finite float");
+        return;
+      }
+    }
+    if (vector_) result_.vector.emplace(geometry_, std::move(samples));
+    else result_.scalar.emplace(geometry_, std::move(samples));
+  }
+
+  bool inflate(std::string_view compressed, std::size_t expected, std::string& out) {
+    z_stream z{};
+    if (inflateInit2(&z, 15 + 32) != Z_OK) {  // gzip or zlib header
+      error(data_line_, "cannot start gzip decoder");
+      return false;
+    }
+    out.resize(expected + 1);  // one spare byte detects data longer than the header says
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
+    z.avail_in = static_cast<uInt>(std::min<std::size_t>(compressed.size(), std::numeric_limits<uInt>::max()));
+    z.next_out = reinterpret_cast<Bytef*>(out.data());
+    z.avail_out = static_cast<uInt>(out.size());
+    int status = Z_OK;
+    while (status == Z_OK) {
+      status = ::inflate(&z, Z_NO_FLUSH);
+      if (status == Z_OK && z.avail_out == 0) break;
+      if (status == Z_BUF_ERROR) break;
+    }
+    const std::size_t produced = out.size() - z.avail_out;
+    inflateEnd(&z);
+    if (status != Z_STREAM_END && status != Z_OK) {
+      error(data_line_, status == Z_BUF_ERROR ? "gzip data is truncated"
+                                              : std::string("gzip data is corrupt (") + (z.msg ? z.msg : "zlib error") + ")");
+      return false;
+    }
+    if (status == Z_OK && produced <= expected) {
+      error(data_line_, "gzip data is truncated");
+      return false;
+    }
+    out.resize(produced);
+    return true;
+  }
+
+  template <class T>
+  static T load(const char* p, bool swap) {
+    std::array<unsigned char, sizeof(T)> b;
+    std::memcpy(b.data(), p, sizeof(T));
+    const bool host_big = std::endian::native == std::endian::big;
+    if (swap != host_big) std::reverse(b.begin(), b.end());
+    T v;
+    std::memcpy(&v, b.data(), sizeof(T));
+    return v;
+  }
+
+  void convert(std::string_view binary, std::vector<float>& samples) const {
+    const std::size_t n = sample_bytes(type_);
+    const bool big = big_endian_;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const char* p = binary.data() + i * n;
+      double v = 0.0;
+      switch (type_) {
+        case SampleType::i8: v = static_cast<signed char>(*p); break;
+        case SampleType::u8: v = static_cast<unsigned char>(*p); break;
+        case SampleType::i16: v = load<std::int16_t>(p, big); break;
+        case SampleType::u16: v = load<std::uint16_t>(p, big); break;
+        case SampleType::i32: v = load<std::int32_t>(p, big); break;
+        case SampleType::u32: v = load<std::uint32_t>(p, big); break;
+        case SampleType::i64: v = static_cast<double>(load<std::int64_t>(p, big)); break;
+        case SampleType::u64: v = static_cast<double>(load<std::uint64_t>(p, big)); break;
+        case SampleType::f32: v = load<float>(p, big); break;
+        case SampleType::f64: v = load<double>(p, big); break;
+      }
+      samples[i] = static_cast<float>(v);
+    }
+  }
+
+  bool decode_ascii(std::string_view text, std::vector<float>& samples) {
+    std::size_t count = 0;
+    int line = data_line_;
+    std::size_t i = 0;
+    while (i < text.size()) {
+      const char c = text[i];
+      if (c == '\n') { ++line; ++i; continue; }
+      if (c == ' ' || c == '\t' || c == '\r' || c == ',') { ++i; continue; }
+      std::size_t end = i;
+      while (end < text.size() && text[end] != ' ' && text[end] != '\t' && text[end] != '\r' && text[end] != '\n' && text[end] != ',') ++end;
+      const std::string_view word = text.substr(i, end - i);
+      const auto v = parse_number(word);
+      if (!v) {
+        error(line, "'" + std::string(word.substr(0, 40)) + "' is not a number");
+        return false;
+      }
+      if (count == samples.size()) {
+        error(line, "more than the " + std::to_string(samples.size()) + " samples the header declares");
+        return false;
+      }
+      samples[count++] = static_cast<float>(*v);
+      i = end;
+    }
+    if (count != samples.size()) {
+      error(line, "data holds " + std::to_string(count) + " samples, the header needs " + std::to_string(samples.size()));
+      return false;
+    }
+    return true;
+  }
+
+  enum class Encoding { raw, gzip, ascii };
+
+  std::string_view bytes_;
+  std::string file_;
+  NrrdLoadResult result_;
+  std::map<std::string, Entry> fields_;
+  std::size_t data_offset_ = 0;
+  int data_line_ = 0;
+  SampleType type_ = SampleType::f32;
+  Encoding encoding_ = Encoding::raw;
+  bool big_endian_ = false;
+  int dimension_ = 3;
+  bool vector_ = false;
+  std::array<int, 4> sizes_{};
+  std::size_t samples_ = 0;
+  GridGeometry geometry_;
+};
+
+}  // namespace
+
+NrrdLoadResult parse_nrrd(std::string_view bytes, const std::string& file_name) {
+  return Reader(bytes, file_name).run();
+}
+
+NrrdLoadResult load_nrrd_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    NrrdLoadResult r;
+    r.diagnostics.push_back({Diagnostic::Severity::error, path.string(), 0, "cannot open file"});
+    return r;
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return parse_nrrd(buffer.str(), path.string());
+}
+
+}  // namespace vimg

@@ -1,0 +1,578 @@
+// parse_image_xml: the XML image format v1 (spec section 1) read into the document model.
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+
+#include "storage/image_io.hpp"
+#include "storage/image_limits.hpp"
+#include "storage/number_text.hpp"
+
+namespace vimg {
+
+namespace {
+
+using tinyxml2::XMLAttribute;
+using tinyxml2::XMLElement;
+using tinyxml2::XMLNode;
+
+// The allowed range of a number attribute.
+enum class Range {
+  any,            // any finite value
+  positive,       // > 0
+  canvas_size,    // (0, kMaxCanvasMm]
+  unit_closed,    // [0, 1]
+  unit_open,      // (0, 1)
+  frequency,      // (0, kMaxFrequencyHz]
+};
+
+bool in_range(double v, Range range) {
+  switch (range) {
+    case Range::any: return true;
+    case Range::positive: return v > 0.0;
+    case Range::canvas_size: return v > 0.0 && v <= kMaxCanvasMm;
+    case Range::unit_closed: return v >= 0.0 && v <= 1.0;
+    case Range::unit_open: return v > 0.0 && v < 1.0;
+    case Range::frequency: return v > 0.0 && v <= kMaxFrequencyHz;
+  }
+  return false;
+}
+
+std::string range_text(Range range) {
+  switch (range) {
+    case Range::any: return "finite";
+    case Range::positive: return "> 0";
+    case Range::canvas_size: return "in (0, " + format_decimal(kMaxCanvasMm) + "]";
+    case Range::unit_closed: return "in [0, 1]";
+    case Range::unit_open: return "in (0, 1)";
+    case Range::frequency: return "in (0, " + format_decimal(kMaxFrequencyHz) + "]";
+  }
+  return "";
+}
+
+bool is_valid_id(std::string_view id) {
+  if (id.empty()) return false;
+  const auto alpha = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; };
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  if (!alpha(id.front())) return false;
+  return std::all_of(id.begin() + 1, id.end(),
+                     [&](char c) { return alpha(c) || digit(c) || c == '.' || c == '-'; });
+}
+
+std::string print_verbatim(const XMLElement& element) {
+  tinyxml2::XMLPrinter printer(nullptr, /*compact=*/true);
+  element.Accept(&printer);
+  return std::string(printer.CStr());
+}
+
+// Axis-aligned bounds of a primitive, for the "wholly outside the canvas" warning.
+struct Bounds {
+  double min_x, min_y, max_x, max_y;
+};
+
+class Reader {
+ public:
+  explicit Reader(const std::string& file_name) : file_(file_name) {}
+
+  LoadResult run(std::string_view xml) {
+    LoadResult result;
+    if (xml.size() > kMaxFileBytes) {
+      error(0, "file is larger than " + std::to_string(kMaxFileBytes / (1024 * 1024)) + " MiB");
+      result.diagnostics = std::move(diagnostics_);
+      return result;
+    }
+    tinyxml2::XMLDocument doc(true, tinyxml2::PRESERVE_WHITESPACE);
+    doc.Parse(xml.data(), xml.size());
+    if (doc.Error()) {
+      error(doc.ErrorLineNum(), std::string("not well-formed XML (") +
+                                    tinyxml2::XMLDocument::ErrorIDToName(doc.ErrorID()) + ")");
+    } else {
+      const XMLElement* root = doc.RootElement();
+      if (root == nullptr) {
+        error(1, "no root element, expected <vibroimage>");
+      } else if (std::string_view(root->Name()) != "vibroimage") {
+        error(root->GetLineNum(), std::string("root element is <") + root->Name() + ">, expected <vibroimage>");
+      } else if (const XMLElement* extra = root->NextSiblingElement()) {
+        error(extra->GetLineNum(), std::string("second root element <") + extra->Name() + "> after <vibroimage>");
+      } else {
+        Image image;
+        read_root(*root, image);
+        if (!failed_) result.image = std::move(image);
+      }
+    }
+    std::stable_sort(diagnostics_.begin(), diagnostics_.end(),
+                     [](const Diagnostic& a, const Diagnostic& b) { return a.line < b.line; });
+    result.diagnostics = std::move(diagnostics_);
+    return result;
+  }
+
+ private:
+  void error(int line, std::string message) {
+    failed_ = true;
+    diagnostics_.push_back({Diagnostic::Severity::error, file_, line, std::move(message)});
+  }
+  void warning(int line, std::string message) {
+    diagnostics_.push_back({Diagnostic::Severity::warning, file_, line, std::move(message)});
+  }
+
+  static std::string tag(const XMLElement& e) { return std::string("<") + e.Name() + ">"; }
+
+  // Unknown attributes become warnings and are returned verbatim in order.
+  ExtraAttributes collect_extra_attributes(const XMLElement& e, std::initializer_list<std::string_view> known) {
+    ExtraAttributes extras;
+    for (const XMLAttribute* a = e.FirstAttribute(); a != nullptr; a = a->Next()) {
+      const std::string_view name = a->Name();
+      if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+      warning(a->GetLineNum(), "unknown attribute '" + std::string(name) + "' on " + tag(e) + " kept as is");
+      extras.emplace_back(a->Name(), a->Value());
+    }
+    return extras;
+  }
+
+  // Reads a number attribute; `fallback` is used when it is absent (absent and no fallback is an error).
+  double number(const XMLElement& e, const char* name, Range range, std::optional<double> fallback) {
+    const XMLAttribute* a = e.FindAttribute(name);
+    if (a == nullptr) {
+      if (!fallback) error(e.GetLineNum(), tag(e) + " is missing required attribute '" + name + "'");
+      return fallback.value_or(0.0);
+    }
+    const ParsedNumber parsed = parse_decimal(a->Value());
+    if (const auto* reason = std::get_if<std::string>(&parsed)) {
+      error(a->GetLineNum(), tag(e) + " attribute '" + name + "' = \"" + a->Value() + "\" " + *reason);
+      return fallback.value_or(0.0);
+    }
+    const double value = std::get<double>(parsed);
+    if (!in_range(value, range)) {
+      error(a->GetLineNum(), tag(e) + " attribute '" + name + "' must be " + range_text(range) + ", got " + a->Value());
+    }
+    return value;
+  }
+
+  void read_id(const XMLElement& e, Element& element) {
+    const XMLAttribute* a = e.FindAttribute("id");
+    if (a == nullptr) return;
+    element.id = a->Value();
+    if (!is_valid_id(element.id)) {
+      error(a->GetLineNum(), tag(e) + " id \"" + element.id + "\" must match [A-Za-z_][A-Za-z0-9_.-]*");
+      return;
+    }
+    const auto [it, inserted] = ids_.emplace(element.id, a->GetLineNum());
+    if (!inserted) {
+      error(a->GetLineNum(), "duplicate id '" + element.id + "' (first used on line " + std::to_string(it->second) + ")");
+    }
+  }
+
+  void read_root(const XMLElement& root, Image& image) {
+    read_version(root, image);
+    image.width_mm = number(root, "width", Range::canvas_size, std::nullopt);
+    image.height_mm = number(root, "height", Range::canvas_size, std::nullopt);
+    image.extra_attributes = collect_extra_attributes(root, {"version", "width", "height"});
+    canvas_w_ = image.width_mm;
+    canvas_h_ = image.height_mm;
+    int meta_line = 0;
+    int interaction_line = 0;
+    for (const XMLNode* node = root.FirstChild(); node != nullptr; node = node->NextSibling()) {
+      const XMLElement* child = node->ToElement();
+      if (child == nullptr) {
+        note_text(*node, root);
+        continue;
+      }
+      const std::string_view name = child->Name();
+      if (name == "meta") {
+        if (meta_line != 0) {
+          error(child->GetLineNum(), "second <meta> (the first is on line " + std::to_string(meta_line) + ")");
+          continue;
+        }
+        meta_line = child->GetLineNum();
+        image.meta = read_meta(*child);
+      } else if (name == "interaction") {
+        if (interaction_line != 0) {
+          error(child->GetLineNum(),
+                "second <interaction> (the first is on line " + std::to_string(interaction_line) + ")");
+          continue;
+        }
+        interaction_line = child->GetLineNum();
+        image.interaction = read_interaction(*child);
+      } else {
+        image.children.push_back(read_element(*child, 0));
+      }
+    }
+  }
+
+  void read_version(const XMLElement& root, Image& image) {
+    const XMLAttribute* a = root.FindAttribute("version");
+    if (a == nullptr) {
+      error(root.GetLineNum(), "<vibroimage> is missing required attribute 'version'");
+      return;
+    }
+    const std::string_view text = a->Value();
+    const auto dot = text.find('.');
+    const auto digits = [](std::string_view s) {
+      return !s.empty() && s.size() <= 6 && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    if (dot == std::string_view::npos || !digits(text.substr(0, dot)) || !digits(text.substr(dot + 1))) {
+      error(a->GetLineNum(), "<vibroimage> attribute 'version' = \"" + std::string(text) + "\" is not MAJOR.MINOR");
+      return;
+    }
+    image.version_major = std::stoi(std::string(text.substr(0, dot)));
+    image.version_minor = std::stoi(std::string(text.substr(dot + 1)));
+    if (image.version_major != kFormatMajor) {
+      error(a->GetLineNum(), "file format version " + std::string(text) + " is not supported: this reader reads version " +
+                                 std::to_string(kFormatMajor) + "." + std::to_string(kFormatMinor) +
+                                 (image.version_major > kFormatMajor ? " (the file is newer)" : ""));
+    }
+  }
+
+  void note_text(const XMLNode& node, const XMLElement& parent) {
+    if (node.ToText() != nullptr) {
+      warning(node.GetLineNum(), "text inside " + tag(parent) + " is ignored");
+    }
+  }
+
+  static std::string text_of(const XMLElement& e) {
+    std::string text;
+    for (const XMLNode* n = e.FirstChild(); n != nullptr; n = n->NextSibling()) {
+      if (const auto* t = n->ToText()) text += t->Value();
+    }
+    return text;
+  }
+
+  void read_meta_text(const XMLElement& e, std::optional<std::string>& field) {
+    if (field) {
+      error(e.GetLineNum(), "second " + tag(e) + " in <meta>");
+      return;
+    }
+    collect_ignored_attributes(e);
+    for (const XMLElement* c = e.FirstChildElement(); c != nullptr; c = c->NextSiblingElement()) {
+      warning(c->GetLineNum(), "element " + tag(*c) + " inside " + tag(e) + " is ignored");
+    }
+    field = text_of(e);
+  }
+
+  void collect_ignored_attributes(const XMLElement& e) {
+    for (const XMLAttribute* a = e.FirstAttribute(); a != nullptr; a = a->Next()) {
+      warning(a->GetLineNum(), "unknown attribute '" + std::string(a->Name()) + "' on " + tag(e) + " is ignored");
+    }
+  }
+
+  static bool is_iso8601(std::string_view s) {
+    // YYYY-MM-DD, optionally followed by THH:MM[:SS[.fraction]][Z|+HH:MM|-HH:MM].
+    size_t i = 0;
+    const auto digits = [&](size_t n) {
+      for (size_t k = 0; k < n; ++k, ++i) {
+        if (i >= s.size() || s[i] < '0' || s[i] > '9') return false;
+      }
+      return true;
+    };
+    const auto lit = [&](char c) {
+      if (i < s.size() && s[i] == c) {
+        ++i;
+        return true;
+      }
+      return false;
+    };
+    if (!(digits(4) && lit('-') && digits(2) && lit('-') && digits(2))) return false;
+    if (i == s.size()) return true;
+    if (!(lit('T') && digits(2) && lit(':') && digits(2))) return false;
+    if (lit(':')) {
+      if (!digits(2)) return false;
+      if (lit('.')) {
+        if (!digits(1)) return false;
+        while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
+      }
+    }
+    if (i == s.size() || lit('Z')) return i == s.size();
+    if (lit('+') || lit('-')) return digits(2) && lit(':') && digits(2) && i == s.size();
+    return false;
+  }
+
+  Meta read_meta(const XMLElement& e) {
+    Meta meta;
+    collect_ignored_attributes(e);
+    for (const XMLNode* node = e.FirstChild(); node != nullptr; node = node->NextSibling()) {
+      const XMLElement* c = node->ToElement();
+      if (c == nullptr) {
+        note_text(*node, e);
+        continue;
+      }
+      const std::string_view name = c->Name();
+      if (name == "title") {
+        read_meta_text(*c, meta.title);
+      } else if (name == "author") {
+        read_meta_text(*c, meta.author);
+      } else if (name == "description") {
+        read_meta_text(*c, meta.description);
+      } else if (name == "created") {
+        read_meta_text(*c, meta.created);
+        if (meta.created && !is_iso8601(*meta.created)) {
+          error(c->GetLineNum(), "<created> \"" + *meta.created + "\" is not an ISO 8601 date (YYYY-MM-DD[THH:MM[:SS]][Z])");
+        }
+      } else if (name == "tag") {
+        std::optional<std::string> tag_text;
+        read_meta_text(*c, tag_text);
+        meta.tags.push_back(tag_text.value_or(""));
+      } else if (name == "tool") {
+        if (meta.tool) {
+          error(c->GetLineNum(), "second <tool> in <meta>");
+          continue;
+        }
+        ToolInfo tool;
+        const char* tool_name = c->Attribute("name");
+        const char* tool_version = c->Attribute("version");
+        if (tool_name == nullptr) error(c->GetLineNum(), "<tool> is missing required attribute 'name'");
+        if (tool_version == nullptr) error(c->GetLineNum(), "<tool> is missing required attribute 'version'");
+        tool.name = tool_name ? tool_name : "";
+        tool.version = tool_version ? tool_version : "";
+        for (const XMLAttribute* a = c->FirstAttribute(); a != nullptr; a = a->Next()) {
+          const std::string_view n = a->Name();
+          if (n != "name" && n != "version") {
+            warning(a->GetLineNum(), "unknown attribute '" + std::string(n) + "' on <tool> is ignored");
+          }
+        }
+        meta.tool = tool;
+      } else {
+        warning(c->GetLineNum(), "unknown element " + tag(*c) + " in <meta> kept as is");
+        meta.unknown_children.push_back(UnknownElement{print_verbatim(*c)});
+      }
+    }
+    return meta;
+  }
+
+  InteractionParams read_interaction(const XMLElement& e) {
+    InteractionParams p;
+    p.mass_kg = number(e, "mass", Range::positive, InteractionParams{}.mass_kg);
+    p.full_speed_mm_per_s = number(e, "fullSpeed", Range::positive, InteractionParams{}.full_speed_mm_per_s);
+    p.max_deformation_mm = number(e, "maxDeformation", Range::positive, InteractionParams{}.max_deformation_mm);
+    p.extra_attributes = collect_extra_attributes(e, {"mass", "fullSpeed", "maxDeformation"});
+    for (const XMLNode* node = e.FirstChild(); node != nullptr; node = node->NextSibling()) {
+      if (const XMLElement* c = node->ToElement()) {
+        warning(c->GetLineNum(), "element " + tag(*c) + " inside <interaction> is ignored");
+      } else {
+        note_text(*node, e);
+      }
+    }
+    return p;
+  }
+
+  // A child of <vibroimage> or <group>: a primitive, a group, or an unknown element kept verbatim.
+  // `depth` is the number of groups around it.
+  Element read_element(const XMLElement& e, int depth) {
+    Element element;
+    element.source_line = e.GetLineNum();
+    const std::string_view name = e.Name();
+    if (name == "dot") {
+      read_id(e, element);
+      element.body = read_dot(e, element);
+    } else if (name == "line") {
+      read_id(e, element);
+      element.body = read_line(e, element);
+    } else if (name == "surface") {
+      read_id(e, element);
+      element.body = read_surface(e, element);
+    } else if (name == "group") {
+      read_id(e, element);
+      element.body = read_group(e, element, depth + 1);
+      return element;
+    } else {
+      warning(e.GetLineNum(), "unknown element " + tag(e) + " kept as is");
+      element.body = UnknownElement{print_verbatim(e)};
+      return element;
+    }
+    read_primitive_children(e, element);
+    return element;
+  }
+
+  void read_primitive_children(const XMLElement& e, Element& element) {
+    for (const XMLNode* node = e.FirstChild(); node != nullptr; node = node->NextSibling()) {
+      if (const XMLElement* c = node->ToElement()) {
+        warning(c->GetLineNum(), "unknown element " + tag(*c) + " in " + tag(e) + " kept as is");
+        element.unknown_children.push_back(UnknownElement{print_verbatim(*c)});
+      } else {
+        note_text(*node, e);
+      }
+    }
+  }
+
+  void warn_if_outside(const XMLElement& e, const Bounds& b) {
+    if (failed_) return;
+    if (b.max_x < 0.0 || b.max_y < 0.0 || b.min_x > canvas_w_ || b.min_y > canvas_h_) {
+      warning(e.GetLineNum(), tag(e) + " lies wholly outside the " + format_decimal(canvas_w_) + " x " +
+                                  format_decimal(canvas_h_) + " mm canvas");
+    }
+  }
+
+  Dot read_dot(const XMLElement& e, Element& element) {
+    Dot d;
+    d.x_mm = number(e, "x", Range::any, std::nullopt);
+    d.y_mm = number(e, "y", Range::any, std::nullopt);
+    d.radius_mm = number(e, "radius", Range::positive, Dot{}.radius_mm);
+    d.gain = number(e, "gain", Range::unit_closed, Dot{}.gain);
+    element.extra_attributes = collect_extra_attributes(e, {"id", "x", "y", "radius", "gain"});
+    warn_if_outside(e, {d.x_mm - d.radius_mm, d.y_mm - d.radius_mm, d.x_mm + d.radius_mm, d.y_mm + d.radius_mm});
+    return d;
+  }
+
+  Line read_line(const XMLElement& e, Element& element) {
+    Line l;
+    l.x1_mm = number(e, "x1", Range::any, std::nullopt);
+    l.y1_mm = number(e, "y1", Range::any, std::nullopt);
+    l.x2_mm = number(e, "x2", Range::any, std::nullopt);
+    l.y2_mm = number(e, "y2", Range::any, std::nullopt);
+    l.width_mm = number(e, "width", Range::positive, Line{}.width_mm);
+    l.frequency_hz = number(e, "frequency", Range::frequency, Line{}.frequency_hz);
+    l.damping = number(e, "damping", Range::unit_open, Line{}.damping);
+    l.gain = number(e, "gain", Range::unit_closed, Line{}.gain);
+    element.extra_attributes =
+        collect_extra_attributes(e, {"id", "x1", "y1", "x2", "y2", "width", "frequency", "damping", "gain"});
+    const double half = l.width_mm / 2.0;
+    warn_if_outside(e, {std::min(l.x1_mm, l.x2_mm) - half, std::min(l.y1_mm, l.y2_mm) - half,
+                        std::max(l.x1_mm, l.x2_mm) + half, std::max(l.y1_mm, l.y2_mm) + half});
+    return l;
+  }
+
+  std::vector<Point2Mm> read_points(const XMLElement& e) {
+    std::vector<Point2Mm> points;
+    const XMLAttribute* a = e.FindAttribute("points");
+    if (a == nullptr) {
+      error(e.GetLineNum(), "<surface> is missing required attribute 'points'");
+      return points;
+    }
+    const std::string_view text = a->Value();
+    const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    size_t i = 0;
+    while (i < text.size()) {
+      while (i < text.size() && is_space(text[i])) ++i;
+      if (i == text.size()) break;
+      size_t end = i;
+      while (end < text.size() && !is_space(text[end])) ++end;
+      const std::string_view pair = text.substr(i, end - i);
+      const auto comma = pair.find(',');
+      const std::string where = "<surface> attribute 'points': point " + std::to_string(points.size() + 1) + " \"" +
+                                std::string(pair) + "\"";
+      if (comma == std::string_view::npos) {
+        error(a->GetLineNum(), where + " is not x,y");
+        return {};
+      }
+      const ParsedNumber x = parse_decimal(pair.substr(0, comma));
+      const ParsedNumber y = parse_decimal(pair.substr(comma + 1));
+      for (const ParsedNumber* p : {&x, &y}) {
+        if (const auto* reason = std::get_if<std::string>(p)) {
+          error(a->GetLineNum(), where + ": " + (p == &x ? "x " : "y ") + *reason);
+          return {};
+        }
+      }
+      points.push_back({std::get<double>(x), std::get<double>(y)});
+      i = end;
+    }
+    if (points.size() < 3) {
+      error(a->GetLineNum(), "<surface> polygon has " + std::to_string(points.size()) + " points, at least 3 are needed");
+    }
+    return points;
+  }
+
+  Surface read_surface(const XMLElement& e, Element& element) {
+    Surface s;
+    const XMLAttribute* shape = e.FindAttribute("shape");
+    Bounds bounds{0, 0, 0, 0};
+    if (shape == nullptr) {
+      error(e.GetLineNum(), "<surface> is missing required attribute 'shape'");
+    } else if (std::string_view(shape->Value()) == "rect") {
+      s.shape = SurfaceShape::rect;
+      s.x_mm = number(e, "x", Range::any, std::nullopt);
+      s.y_mm = number(e, "y", Range::any, std::nullopt);
+      s.width_mm = number(e, "width", Range::positive, std::nullopt);
+      s.height_mm = number(e, "height", Range::positive, std::nullopt);
+      bounds = {s.x_mm, s.y_mm, s.x_mm + s.width_mm, s.y_mm + s.height_mm};
+    } else if (std::string_view(shape->Value()) == "ellipse") {
+      s.shape = SurfaceShape::ellipse;
+      s.cx_mm = number(e, "cx", Range::any, std::nullopt);
+      s.cy_mm = number(e, "cy", Range::any, std::nullopt);
+      s.rx_mm = number(e, "rx", Range::positive, std::nullopt);
+      s.ry_mm = number(e, "ry", Range::positive, std::nullopt);
+      bounds = {s.cx_mm - s.rx_mm, s.cy_mm - s.ry_mm, s.cx_mm + s.rx_mm, s.cy_mm + s.ry_mm};
+    } else if (std::string_view(shape->Value()) == "polygon") {
+      s.shape = SurfaceShape::polygon;
+      s.points = read_points(e);
+      if (!s.points.empty()) {
+        bounds = {s.points[0].x_mm, s.points[0].y_mm, s.points[0].x_mm, s.points[0].y_mm};
+        for (const auto& p : s.points) {
+          bounds = {std::min(bounds.min_x, p.x_mm), std::min(bounds.min_y, p.y_mm), std::max(bounds.max_x, p.x_mm),
+                    std::max(bounds.max_y, p.y_mm)};
+        }
+      }
+    } else {
+      error(shape->GetLineNum(), std::string("<surface> attribute 'shape' = \"") + shape->Value() +
+                                     "\" must be rect, ellipse or polygon");
+    }
+    s.period_mm = number(e, "period", Range::positive, Surface{}.period_mm);
+    s.relief_mm = number(e, "relief", Range::positive, Surface{}.relief_mm);
+    s.pattern = read_pattern(e);
+    s.gain = number(e, "gain", Range::unit_closed, Surface{}.gain);
+    switch (s.shape) {
+      case SurfaceShape::rect:
+        element.extra_attributes = collect_extra_attributes(
+            e, {"id", "shape", "x", "y", "width", "height", "period", "relief", "pattern", "gain"});
+        break;
+      case SurfaceShape::ellipse:
+        element.extra_attributes = collect_extra_attributes(
+            e, {"id", "shape", "cx", "cy", "rx", "ry", "period", "relief", "pattern", "gain"});
+        break;
+      case SurfaceShape::polygon:
+        element.extra_attributes =
+            collect_extra_attributes(e, {"id", "shape", "points", "period", "relief", "pattern", "gain"});
+        break;
+    }
+    if (shape != nullptr) warn_if_outside(e, bounds);
+    return s;
+  }
+
+  SurfacePattern read_pattern(const XMLElement& e) {
+    const XMLAttribute* a = e.FindAttribute("pattern");
+    if (a == nullptr) return Surface{}.pattern;
+    const std::string_view v = a->Value();
+    if (v == "sine") return SurfacePattern::sine;
+    if (v == "square") return SurfacePattern::square;
+    if (v == "triangle") return SurfacePattern::triangle;
+    error(a->GetLineNum(), "<surface> attribute 'pattern' = \"" + std::string(v) + "\" must be sine, square or triangle");
+    return Surface{}.pattern;
+  }
+
+  Group read_group(const XMLElement& e, Element& element, int depth) {
+    Group g;
+    if (const char* name = e.Attribute("name")) g.name = std::string(name);
+    element.extra_attributes = collect_extra_attributes(e, {"id", "name"});
+    if (depth > kMaxGroupDepth) {
+      error(e.GetLineNum(), "groups nested deeper than " + std::to_string(kMaxGroupDepth) + " levels");
+      return g;
+    }
+    for (const XMLNode* node = e.FirstChild(); node != nullptr; node = node->NextSibling()) {
+      if (const XMLElement* c = node->ToElement()) {
+        g.children.push_back(read_element(*c, depth));
+      } else {
+        note_text(*node, e);
+      }
+    }
+    return g;
+  }
+
+  std::string file_;
+  std::vector<Diagnostic> diagnostics_;
+  bool failed_ = false;
+  std::unordered_map<std::string, int> ids_;
+  double canvas_w_ = 0.0;
+  double canvas_h_ = 0.0;
+};
+
+}  // namespace
+
+LoadResult parse_image_xml(std::string_view xml, const std::string& file_name) {
+  return Reader(file_name).run(xml);
+}
+
+}  // namespace vimg
