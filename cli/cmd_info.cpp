@@ -1,0 +1,63 @@
+// `vimg info FILE` (spec section 4): size, counts per primitive kind, groups, meta.
+#include <cstdio>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "cli/command.hpp"
+#include "storage/image_io.hpp"
+#include "storage/image_summary.hpp"
+#include "storage/number_text.hpp"
+
+namespace vimg::cli {
+
+namespace {
+
+void print_field(const char* label, const std::optional<std::string>& value) {
+  if (value) std::printf("%-13s %s\n", label, value->c_str());
+}
+
+}  // namespace
+
+int run_info(std::span<const std::string_view> args) {
+  if (args.size() != 1 || (args[0].size() > 1 && args[0].front() == '-')) {
+    std::fprintf(stderr, "usage: vimg info FILE\n");
+    return kExitUsage;
+  }
+  const std::string file(args[0]);
+  const LoadResult loaded = load_image_file(file);
+  for (const Diagnostic& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  if (!loaded.ok()) return kExitFailure;
+  const Image& image = *loaded.image;
+  const ImageSummary s = summarize(image);
+  std::printf("%-13s %s\n", "file:", file.c_str());
+  std::printf("%-13s %d.%d\n", "version:", image.version_major, image.version_minor);
+  std::printf("%-13s %s x %s mm\n", "size:", format_decimal(image.width_mm).c_str(),
+              format_decimal(image.height_mm).c_str());
+  std::printf("%-13s %d (dots %d, lines %d, surfaces %d)\n", "primitives:", s.primitives(), s.dots, s.lines,
+              s.surfaces);
+  std::printf("%-13s %d (deepest nesting %d)\n", "groups:", s.groups, s.max_group_depth);
+  if (s.unknown_elements > 0) std::printf("%-13s %d (kept as is)\n", "unknown:", s.unknown_elements);
+  const InteractionParams p = image.effective_interaction();
+  std::printf("%-13s mass %s kg, fullSpeed %s mm/s, maxDeformation %s mm%s\n", "interaction:",
+              format_decimal(p.mass_kg).c_str(), format_decimal(p.full_speed_mm_per_s).c_str(),
+              format_decimal(p.max_deformation_mm).c_str(), image.interaction ? "" : " (defaults)");
+  if (image.meta) {
+    const Meta& m = *image.meta;
+    print_field("title:", m.title);
+    print_field("author:", m.author);
+    print_field("description:", m.description);
+    print_field("created:", m.created);
+    if (!m.tags.empty()) {
+      std::string tags;
+      for (const auto& t : m.tags) tags += (tags.empty() ? "" : ", ") + t;
+      std::printf("%-13s %s\n", "tags:", tags.c_str());
+    }
+    if (m.tool) std::printf("%-13s %s %s\n", "tool:", m.tool->name.c_str(), m.tool->version.c_str());
+  } else {
+    std::printf("%-13s none\n", "meta:");
+  }
+  return kExitOk;
+}
+
+}  // namespace vimg::cli
