@@ -5,9 +5,17 @@
 namespace vimg::cli {
 
 // Each command's entry point, defined in its own cli/cmd_*.cpp.
+int run_validate(std::span<const std::string_view> args);
+int run_convert(std::span<const std::string_view> args);
+int run_info(std::span<const std::string_view> args);
 
 std::span<const Command> all_commands() {
-  static const std::array<Command, 0> commands{};
+  static const Command commands[] = {
+      {"validate", "vimg validate FILE...", "check .vimg and .png images; exit 1 if any is invalid", run_validate},
+      {"convert", "vimg convert IN OUT [--scale PX_PER_MM]", "convert .vimg <-> .png (default 10 px/mm)",
+       run_convert},
+      {"info", "vimg info FILE", "summary: size, primitives per kind, groups, meta", run_info},
+  };
   return commands;
 }
 
