@@ -57,16 +57,30 @@ inline Rendered render(const ForceShader& shader, const Path& path, double durat
   return out;
 }
 
-// Times of sign changes (linear interpolation between the two samples), inside [from, to].
+// Times of sign changes inside [from, to]: linear interpolation between two adjacent samples of
+// opposite signs, or the middle of a run of at most two exact zeros between opposite signs.
+// Longer silences are gaps, not crossings.
 inline std::vector<double> zero_crossings(const Rendered& r, double from_s, double to_s) {
   std::vector<double> out;
-  for (std::size_t k = 1; k < r.drive.size(); ++k) {
-    const double a = r.drive[k - 1];
-    const double b = r.drive[k];
-    if (r.time_s[k - 1] < from_s || r.time_s[k] > to_s) continue;
-    if ((a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0)) {
-      out.push_back(r.time_s[k - 1] + (r.time_s[k] - r.time_s[k - 1]) * a / (a - b));
+  std::size_t last_nonzero = r.drive.size();
+  for (std::size_t k = 0; k < r.drive.size(); ++k) {
+    if (r.time_s[k] < from_s || r.time_s[k] > to_s) {
+      last_nonzero = r.drive.size();
+      continue;
     }
+    const double b = r.drive[k];
+    if (b == 0.0) continue;
+    if (last_nonzero < r.drive.size() && k - last_nonzero <= 3) {
+      const double a = r.drive[last_nonzero];
+      if ((a < 0.0) != (b < 0.0)) {
+        if (k - last_nonzero == 1) {
+          out.push_back(r.time_s[last_nonzero] + (r.time_s[k] - r.time_s[last_nonzero]) * a / (a - b));
+        } else {
+          out.push_back(0.5 * (r.time_s[last_nonzero + 1] + r.time_s[k - 1]));
+        }
+      }
+    }
+    last_nonzero = k;
   }
   return out;
 }
