@@ -1,0 +1,223 @@
+#include "hal/actuator_profile.hpp"
+
+#include <tinyxml2.h>
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace vimg {
+
+namespace {
+
+class ProfileParser {
+ public:
+  explicit ProfileParser(const std::string& file_name) : file_(file_name) {}
+
+  void error(int line, const std::string& problem) {
+    errors_.push_back(file_ + ":" + std::to_string(line) + ": error: " + problem);
+  }
+
+  // A required or optional positive number attribute; records an error when malformed.
+  std::optional<double> number(const tinyxml2::XMLElement& element, const char* attribute, bool required,
+                               double min_value, double max_value) {
+    const char* text = element.Attribute(attribute);
+    const int line = element.GetLineNum();
+    if (text == nullptr) {
+      if (required) {
+        error(line, std::string("<") + element.Name() + "> needs attribute '" + attribute + "'");
+      }
+      return std::nullopt;
+    }
+    double value = 0.0;
+    std::istringstream stream{std::string(text)};
+    stream.imbue(std::locale::classic());
+    if (!(stream >> value) || !stream.eof() || !std::isfinite(value)) {
+      error(line, std::string("attribute '") + attribute + "' is not a number: '" + text + "'");
+      return std::nullopt;
+    }
+    if (value < min_value || value > max_value) {
+      std::ostringstream range;
+      range << "attribute '" << attribute << "' = " << text << " is outside [" << min_value << ", "
+            << max_value << "]";
+      error(line, range.str());
+      return std::nullopt;
+    }
+    return value;
+  }
+
+  std::optional<bool> boolean(const tinyxml2::XMLElement& element, const char* attribute) {
+    const char* text = element.Attribute(attribute);
+    if (text == nullptr) {
+      return std::nullopt;
+    }
+    const std::string value = text;
+    if (value == "true" || value == "1") return true;
+    if (value == "false" || value == "0") return false;
+    error(element.GetLineNum(), std::string("attribute '") + attribute + "' must be true or false, not '" +
+                                    value + "'");
+    return std::nullopt;
+  }
+
+  ProfileLoadResult parse(std::string_view xml) {
+    tinyxml2::XMLDocument document;
+    if (document.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
+      error(document.ErrorLineNum(), std::string("XML: ") + document.ErrorStr());
+      return finish(std::nullopt);
+    }
+    const tinyxml2::XMLElement* root = document.RootElement();
+    if (root == nullptr || std::string_view(root->Name()) != "actuator") {
+      error(root != nullptr ? root->GetLineNum() : 1, "the root element must be <actuator>");
+      return finish(std::nullopt);
+    }
+    ActuatorProfile profile;
+    if (const char* name = root->Attribute("name")) {
+      profile.name = name;
+    } else {
+      error(root->GetLineNum(), "<actuator> needs attribute 'name'");
+    }
+    const std::string type = root->Attribute("type") != nullptr ? root->Attribute("type") : "";
+    if (type == "lra") profile.type = ActuatorType::lra;
+    else if (type == "erm") profile.type = ActuatorType::erm;
+    else if (type == "voice_coil") profile.type = ActuatorType::voice_coil;
+    else if (type == "ideal") profile.type = ActuatorType::ideal;
+    else error(root->GetLineNum(), "<actuator> type must be lra, erm, voice_coil or ideal, not '" + type + "'");
+
+    for (const tinyxml2::XMLElement* child = root->FirstChildElement(); child != nullptr;
+         child = child->NextSiblingElement()) {
+      const std::string_view name = child->Name();
+      if (name == "resonance") {
+        if (auto hz = number(*child, "hz", true, 1.0, 20000.0)) profile.resonance_hz = *hz;
+      } else if (name == "drive") {
+        if (auto v = number(*child, "rated_voltage_V", false, 0.0, 100.0)) profile.rated_voltage_V = *v;
+        if (auto v = number(*child, "overdrive_clamp_V", false, 0.0, 100.0)) profile.overdrive_clamp_V = *v;
+        if (auto ms = number(*child, "min_pulse_ms", false, 0.0, 1000.0)) profile.min_pulse_s = *ms / 1000.0;
+        if (auto b = boolean(*child, "braking")) profile.braking = *b;
+        if (profile.overdrive_clamp_V > 0.0 && profile.overdrive_clamp_V < profile.rated_voltage_V) {
+          error(child->GetLineNum(), "overdrive_clamp_V must not be below rated_voltage_V");
+        }
+      } else if (name == "driver") {
+        parse_driver(*child, profile);
+      } else {
+        error(child->GetLineNum(), "unknown element <" + std::string(name) + "> in <actuator>");
+      }
+    }
+    if (profile.driver == DriverChip::drv2605l && profile.rated_voltage_V <= 0.0) {
+      error(root->GetLineNum(), "a drv2605l actuator needs <drive rated_voltage_V=...> above 0");
+    }
+    return finish(profile);
+  }
+
+ private:
+  void parse_driver(const tinyxml2::XMLElement& element, ActuatorProfile& profile) {
+    const std::string chip = element.Attribute("chip") != nullptr ? element.Attribute("chip") : "";
+    if (chip == "drv2605l") profile.driver = DriverChip::drv2605l;
+    else if (chip == "audio") profile.driver = DriverChip::audio;
+    else if (chip == "bos1901") profile.driver = DriverChip::bos1901;
+    else if (chip == "hid") profile.driver = DriverChip::hid;
+    else if (chip == "none") profile.driver = DriverChip::none;
+    else error(element.GetLineNum(), "<driver> chip must be drv2605l, audio, bos1901, hid or none, not '" + chip + "'");
+    if (const char* bus = element.Attribute("bus")) profile.bus = bus;
+    if (const char* address = element.Attribute("address")) {
+      std::string_view text = address;
+      int base = 10;
+      if (text.starts_with("0x") || text.starts_with("0X")) {
+        text.remove_prefix(2);
+        base = 16;
+      }
+      int value = -1;
+      const auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), value, base);
+      if (status != std::errc() || end != text.data() + text.size() || value < 0 || value > 0x7F) {
+        error(element.GetLineNum(), "<driver> address must be a 7-bit I2C address, not '" + std::string(address) + "'");
+      } else {
+        profile.address = value;
+      }
+    }
+    for (const tinyxml2::XMLElement* pin = element.FirstChildElement(); pin != nullptr;
+         pin = pin->NextSiblingElement()) {
+      if (std::string_view(pin->Name()) != "pin") {
+        error(pin->GetLineNum(), "unknown element <" + std::string(pin->Name()) + "> in <driver>");
+        continue;
+      }
+      const std::string role = pin->Attribute("role") != nullptr ? pin->Attribute("role") : "";
+      const char* gpio_text = pin->Attribute("gpio");
+      const auto gpio = gpio_text != nullptr ? parse_gpio_pin(gpio_text) : std::nullopt;
+      if (!gpio) {
+        error(pin->GetLineNum(), "<pin> gpio must look like gpiochip0:17");
+        continue;
+      }
+      if (role == "enable") profile.enable_pin = gpio;
+      else if (role == "trigger") profile.trigger_pin = gpio;
+      else error(pin->GetLineNum(), "<pin> role must be enable or trigger, not '" + role + "'");
+    }
+  }
+
+  ProfileLoadResult finish(std::optional<ActuatorProfile> profile) {
+    ProfileLoadResult result;
+    result.errors = std::move(errors_);
+    if (result.errors.empty()) {
+      result.profile = std::move(profile);
+    }
+    return result;
+  }
+
+  std::string file_;
+  std::vector<std::string> errors_;
+};
+
+}  // namespace
+
+std::optional<GpioPin> parse_gpio_pin(std::string_view text) {
+  const auto colon = text.rfind(':');
+  if (colon == std::string_view::npos || colon == 0 || colon + 1 == text.size()) {
+    return std::nullopt;
+  }
+  GpioPin pin;
+  pin.chip = std::string(text.substr(0, colon));
+  const std::string_view number = text.substr(colon + 1);
+  const auto [end, status] = std::from_chars(number.data(), number.data() + number.size(), pin.line);
+  if (status != std::errc() || end != number.data() + number.size()) {
+    return std::nullopt;
+  }
+  return pin;
+}
+
+ProfileLoadResult parse_actuator_profile(std::string_view xml, const std::string& file_name) {
+  return ProfileParser(file_name).parse(xml);
+}
+
+ProfileLoadResult load_actuator_profile(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) {
+    ProfileLoadResult result;
+    result.errors.push_back(path.string() + ": error: cannot open the actuator profile");
+    return result;
+  }
+  std::ostringstream text;
+  text << file.rdbuf();
+  return parse_actuator_profile(text.str(), path.string());
+}
+
+std::string_view to_string(ActuatorType type) {
+  switch (type) {
+    case ActuatorType::lra: return "lra";
+    case ActuatorType::erm: return "erm";
+    case ActuatorType::voice_coil: return "voice_coil";
+    case ActuatorType::ideal: return "ideal";
+  }
+  return "ideal";
+}
+
+std::string_view to_string(DriverChip chip) {
+  switch (chip) {
+    case DriverChip::drv2605l: return "drv2605l";
+    case DriverChip::audio: return "audio";
+    case DriverChip::bos1901: return "bos1901";
+    case DriverChip::hid: return "hid";
+    case DriverChip::none: return "none";
+  }
+  return "none";
+}
+
+}  // namespace vimg

@@ -1,0 +1,99 @@
+#include "hal/drv2605l_calibration.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace vimg {
+
+std::optional<std::string> save_calibration(const Drv2605lCalibration& calibration,
+                                            const std::filesystem::path& path) {
+  const std::filesystem::path temporary = path.string() + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::trunc);
+    if (!out) {
+      return path.string() + ": error: cannot write the calibration file";
+    }
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "# DRV2605L auto-calibration results (vibroimage)\nresonance_hz=%.3f\na_cal_comp=0x%02X\n"
+                  "a_cal_bemf=0x%02X\nbemf_gain=%u\n",
+                  calibration.resonance_hz, calibration.a_cal_comp, calibration.a_cal_bemf,
+                  static_cast<unsigned>(calibration.bemf_gain));
+    out << text;
+    if (!out.flush()) {
+      return path.string() + ": error: cannot write the calibration file";
+    }
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    return path.string() + ": error: cannot replace the calibration file: " + error.message();
+  }
+  return std::nullopt;
+}
+
+CalibrationLoadResult load_calibration(const std::filesystem::path& path) {
+  CalibrationLoadResult result;
+  std::ifstream in(path);
+  if (!in) {
+    return result;  // no file: nothing to restore
+  }
+  Drv2605lCalibration calibration;
+  bool seen[4] = {false, false, false, false};
+  std::string line;
+  int line_number = 0;
+  auto fail = [&](const std::string& problem) {
+    result.error = path.string() + ":" + std::to_string(line_number) + ": error: " + problem;
+    return result;
+  };
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line.empty() || line[0] == '#') continue;
+    const auto equals = line.find('=');
+    if (equals == std::string::npos) return fail("expected key=value");
+    const std::string key = line.substr(0, equals);
+    std::string value = line.substr(equals + 1);
+    if (key == "resonance_hz") {
+      std::istringstream stream(value);
+      stream.imbue(std::locale::classic());
+      if (!(stream >> calibration.resonance_hz) || calibration.resonance_hz <= 0.0) {
+        return fail("resonance_hz must be a positive number");
+      }
+      seen[0] = true;
+      continue;
+    }
+    int base = 10;
+    std::string_view digits = value;
+    if (digits.starts_with("0x")) {
+      digits.remove_prefix(2);
+      base = 16;
+    }
+    unsigned number = 0;
+    const auto [end, status] = std::from_chars(digits.data(), digits.data() + digits.size(), number, base);
+    if (status != std::errc() || end != digits.data() + digits.size() || number > 255) {
+      return fail("'" + key + "' must be a byte value, not '" + value + "'");
+    }
+    if (key == "a_cal_comp") {
+      calibration.a_cal_comp = static_cast<std::uint8_t>(number);
+      seen[1] = true;
+    } else if (key == "a_cal_bemf") {
+      calibration.a_cal_bemf = static_cast<std::uint8_t>(number);
+      seen[2] = true;
+    } else if (key == "bemf_gain") {
+      if (number > 3) return fail("bemf_gain must be 0..3");
+      calibration.bemf_gain = static_cast<std::uint8_t>(number);
+      seen[3] = true;
+    } else {
+      return fail("unknown key '" + key + "'");
+    }
+  }
+  if (!(seen[0] && seen[1] && seen[2] && seen[3])) {
+    return fail("needs resonance_hz, a_cal_comp, a_cal_bemf and bemf_gain");
+  }
+  result.calibration = calibration;
+  return result;
+}
+
+}  // namespace vimg

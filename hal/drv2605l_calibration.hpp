@@ -1,0 +1,33 @@
+#pragma once
+// DRV2605L auto-calibration results, stored after a calibration and restored at start-up.
+// File format (text, one key=value a line, '#' comments):
+//   resonance_hz=175        the profile resonance the calibration was made for
+//   a_cal_comp=0x0E         register 0x18
+//   a_cal_bemf=0x6F         register 0x19
+//   bemf_gain=2             FEEDBACK[1:0]
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace vimg {
+
+struct Drv2605lCalibration {
+  double resonance_hz = 0.0;
+  std::uint8_t a_cal_comp = 0;
+  std::uint8_t a_cal_bemf = 0;
+  std::uint8_t bemf_gain = 0;
+  friend bool operator==(const Drv2605lCalibration&, const Drv2605lCalibration&) = default;
+};
+
+// Returns an error message ("FILE: error: ...") or nothing.
+std::optional<std::string> save_calibration(const Drv2605lCalibration& calibration,
+                                            const std::filesystem::path& path);
+
+struct CalibrationLoadResult {
+  std::optional<Drv2605lCalibration> calibration;
+  std::string error;  // "FILE:LINE: error: problem" when calibration is empty and the file exists
+};
+CalibrationLoadResult load_calibration(const std::filesystem::path& path);
+
+}  // namespace vimg

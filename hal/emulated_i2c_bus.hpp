@@ -1,0 +1,58 @@
+#pragma once
+// Test double for I2cBus: targets (chip emulators) answer at their addresses; faults can be injected.
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+
+#include "hal/i2c_bus.hpp"
+
+namespace vimg {
+
+// A chip on the emulated bus.
+class I2cTarget {
+ public:
+  virtual ~I2cTarget() = default;
+  // False when the chip would not acknowledge its address now (unpowered, EN low, busy).
+  virtual bool acknowledges() = 0;
+  virtual void on_write(std::span<const std::uint8_t> bytes) = 0;
+  virtual void on_write_read(std::span<const std::uint8_t> out, std::span<std::uint8_t> in) = 0;
+};
+
+class EmulatedI2cBus final : public I2cBus {
+ public:
+  explicit EmulatedI2cBus(std::string path = "/dev/i2c-emulated") : path_(std::move(path)) {}
+
+  void attach(std::uint8_t address, I2cTarget& target) { targets_[address] = &target; }
+
+  // The next `count` transfers fail with `error_number` (e.g. EIO, EREMOTEIO) and reach no chip.
+  void fail_next(int count, int error_number) {
+    failures_left_ = count;
+    failure_errno_ = error_number;
+  }
+  // While unplugged every transfer fails with ENODEV and reopen() fails with ENOENT.
+  void set_unplugged(bool unplugged) { unplugged_ = unplugged; }
+
+  void write(std::uint8_t address, std::span<const std::uint8_t> bytes) override;
+  void write_read(std::uint8_t address, std::span<const std::uint8_t> out,
+                  std::span<std::uint8_t> in) override;
+  void reopen() override;
+  const std::string& path() const override { return path_; }
+
+  int failed_transfers() const { return failed_transfers_; }
+  int reopen_count() const { return reopen_count_; }
+
+ private:
+  I2cTarget& target_or_throw(std::uint8_t address, const char* what);
+
+  std::string path_;
+  std::map<std::uint8_t, I2cTarget*> targets_;
+  int failures_left_ = 0;
+  int failure_errno_ = 0;
+  bool unplugged_ = false;
+  bool needs_reopen_ = false;
+  int failed_transfers_ = 0;
+  int reopen_count_ = 0;
+};
+
+}  // namespace vimg

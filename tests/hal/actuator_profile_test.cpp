@@ -1,0 +1,89 @@
+#include <gtest/gtest.h>
+
+#include "hal/actuator_profile.hpp"
+
+namespace vimg {
+namespace {
+
+const std::string kProfiles = std::string(VIMG_SOURCE_DIR) + "/assets/profiles/";
+
+TEST(ActuatorProfile, ShippedLraProfileLoads) {
+  const auto result = load_actuator_profile(kProfiles + "lra-175hz-drv2605l.xml");
+  ASSERT_TRUE(result.profile) << (result.errors.empty() ? "" : result.errors.front());
+  const ActuatorProfile& profile = *result.profile;
+  EXPECT_EQ(profile.type, ActuatorType::lra);
+  EXPECT_DOUBLE_EQ(profile.resonance_hz, 175.0);
+  EXPECT_DOUBLE_EQ(profile.rated_voltage_V, 1.8);
+  EXPECT_DOUBLE_EQ(profile.overdrive_clamp_V, 2.5);
+  EXPECT_DOUBLE_EQ(profile.min_pulse_s, 0.020);
+  EXPECT_TRUE(profile.braking);
+  EXPECT_EQ(profile.driver, DriverChip::drv2605l);
+  EXPECT_EQ(profile.bus, "/dev/i2c-1");
+  EXPECT_EQ(profile.address, 0x5A);
+  ASSERT_TRUE(profile.enable_pin);
+  EXPECT_EQ(profile.enable_pin->chip, "gpiochip0");
+  EXPECT_EQ(profile.enable_pin->line, 17u);
+}
+
+TEST(ActuatorProfile, ShippedAudioAndIdealProfilesLoad) {
+  const auto audio = load_actuator_profile(kProfiles + "voice-coil-audio.xml");
+  ASSERT_TRUE(audio.profile);
+  EXPECT_EQ(audio.profile->type, ActuatorType::voice_coil);
+  EXPECT_EQ(audio.profile->driver, DriverChip::audio);
+  const auto ideal = load_actuator_profile(kProfiles + "ideal.xml");
+  ASSERT_TRUE(ideal.profile);
+  EXPECT_EQ(ideal.profile->type, ActuatorType::ideal);
+  EXPECT_DOUBLE_EQ(ideal.profile->resonance_hz, 175.0);  // the spec's DOT carrier for the ideal actuator
+}
+
+TEST(ActuatorProfile, ErrorsNameFileLineAndProblem) {
+  const char* xml =
+      "<actuator name=\"x\" type=\"lra\">\n"
+      "  <resonance hz=\"abc\"/>\n"
+      "  <drive rated_voltage_V=\"2.0\" overdrive_clamp_V=\"1.0\"/>\n"
+      "  <driver chip=\"drv2605l\" address=\"0x99\"><pin role=\"enable\" gpio=\"17\"/></driver>\n"
+      "  <colour/>\n"
+      "</actuator>\n";
+  const auto result = parse_actuator_profile(xml, "bad.xml");
+  EXPECT_FALSE(result.profile);
+  ASSERT_EQ(result.errors.size(), 5u);
+  EXPECT_EQ(result.errors[0].rfind("bad.xml:2: error: ", 0), 0u) << result.errors[0];
+  EXPECT_NE(result.errors[0].find("hz"), std::string::npos);
+  EXPECT_EQ(result.errors[1].rfind("bad.xml:3: error: ", 0), 0u) << result.errors[1];
+  EXPECT_EQ(result.errors[2].rfind("bad.xml:4: error: ", 0), 0u) << result.errors[2];
+  EXPECT_NE(result.errors[2].find("address"), std::string::npos);
+  EXPECT_EQ(result.errors[3].rfind("bad.xml:4: error: ", 0), 0u) << result.errors[3];
+  EXPECT_EQ(result.errors[4].rfind("bad.xml:5: error: ", 0), 0u) << result.errors[4];
+}
+
+TEST(ActuatorProfile, MalformedXmlAndMissingFileAreErrorsNotCrashes) {
+  const auto broken = parse_actuator_profile("<actuator name=\"x\"\n type=", "broken.xml");
+  ASSERT_EQ(broken.errors.size(), 1u);
+  EXPECT_EQ(broken.errors[0].rfind("broken.xml:", 0), 0u);
+  const auto missing = load_actuator_profile("/nonexistent/profile.xml");
+  ASSERT_EQ(missing.errors.size(), 1u);
+  EXPECT_NE(missing.errors[0].find("/nonexistent/profile.xml"), std::string::npos);
+  const auto wrong_root = parse_actuator_profile("<vibroimage/>", "root.xml");
+  ASSERT_EQ(wrong_root.errors.size(), 1u);
+  EXPECT_NE(wrong_root.errors[0].find("<actuator>"), std::string::npos);
+}
+
+TEST(ActuatorProfile, Drv2605lNeedsARatedVoltage) {
+  const auto result = parse_actuator_profile(
+      "<actuator name=\"x\" type=\"lra\">\n<driver chip=\"drv2605l\"/>\n</actuator>", "nov.xml");
+  ASSERT_EQ(result.errors.size(), 1u);
+  EXPECT_NE(result.errors[0].find("rated_voltage_V"), std::string::npos);
+}
+
+TEST(ActuatorProfile, GpioPinText) {
+  const auto pin = parse_gpio_pin("gpiochip2:5");
+  ASSERT_TRUE(pin);
+  EXPECT_EQ(pin->chip, "gpiochip2");
+  EXPECT_EQ(pin->line, 5u);
+  EXPECT_FALSE(parse_gpio_pin("gpiochip2"));
+  EXPECT_FALSE(parse_gpio_pin("gpiochip2:x"));
+  EXPECT_FALSE(parse_gpio_pin(":3"));
+}
+
+}  // namespace
+}  // namespace vimg
