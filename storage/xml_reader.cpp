@@ -89,7 +89,9 @@ class Reader {
     }
     tinyxml2::XMLDocument doc(true, tinyxml2::PRESERVE_WHITESPACE);
     doc.Parse(xml.data(), xml.size());
-    if (doc.Error()) {
+    if (doc.ErrorID() == tinyxml2::XML_ERROR_EMPTY_DOCUMENT) {
+      error(0, "the file is empty, expected a <vibroimage> document");
+    } else if (doc.Error()) {
       error(doc.ErrorLineNum(), std::string("not well-formed XML (") +
                                     tinyxml2::XMLDocument::ErrorIDToName(doc.ErrorID()) + ")");
     } else {
@@ -402,7 +404,9 @@ class Reader {
   void warn_if_outside(const XMLElement& e, const Bounds& b) {
     if (failed_) return;
     if (b.max_x < 0.0 || b.max_y < 0.0 || b.min_x > canvas_w_ || b.min_y > canvas_h_) {
-      warning(e.GetLineNum(), tag(e) + " lies wholly outside the " + format_decimal(canvas_w_) + " x " +
+      const char* id = e.Attribute("id");
+      const std::string what = id != nullptr ? std::string("<") + e.Name() + " id=\"" + id + "\">" : tag(e);
+      warning(e.GetLineNum(), what + " lies wholly outside the " + format_decimal(canvas_w_) + " x " +
                                   format_decimal(canvas_h_) + " mm canvas");
     }
   }

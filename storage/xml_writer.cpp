@@ -86,7 +86,13 @@ class Writer {
     out_ += '<';
     out_ += name;
     out_ += '>';
-    append_escaped(out_, text, false);
+    const bool all_space = !text.empty() && text.find_first_not_of(" \t\n\r") == std::string_view::npos;
+    if (all_space) {
+      // A parser drops whitespace-only text, so it is written as character references.
+      for (const char c : text) out_ += "&#" + std::to_string(static_cast<int>(c)) + ";";
+    } else {
+      append_escaped(out_, text, false);
+    }
     out_ += "</";
     out_ += name;
     out_ += ">\n";

@@ -1,0 +1,83 @@
+#include "storage/volume/probe_path_io.hpp"
+
+#include "storage/number_text.hpp"
+
+namespace vimg {
+
+ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::string& file_name) {
+  ProbePathParseResult result;
+  std::vector<ProbePathPoint> path;
+  auto error = [&](int line, std::string message) {
+    result.diagnostics.push_back({Diagnostic::Severity::error, file_name, line, std::move(message)});
+  };
+  int line = 0;
+  bool header_seen = false;
+  std::size_t pos = 0;
+  while (pos < text.size() && result.diagnostics.size() < 20) {
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string_view::npos) eol = text.size();
+    std::string_view row = text.substr(pos, eol - pos);
+    pos = eol + 1;
+    ++line;
+    if (!row.empty() && row.back() == '\r') row.remove_suffix(1);
+    if (row.empty() || row.front() == '#') continue;
+    if (!header_seen) {
+      header_seen = true;
+      if (row != "time_s,x_mm,y_mm,z_mm") error(line, "the header must be 'time_s,x_mm,y_mm,z_mm'");
+      continue;
+    }
+    double v[4];
+    int n = 0;
+    bool bad = false;
+    while (!bad) {
+      const std::size_t comma = row.find(',');
+      const std::string_view cell = row.substr(0, comma);
+      if (n == 4) {
+        error(line, "more than 4 columns");
+        bad = true;
+        break;
+      }
+      const ParsedNumber parsed = parse_decimal(cell);
+      if (const auto* why = std::get_if<std::string>(&parsed)) {
+        error(line, "column " + std::to_string(n + 1) + ": '" + std::string(cell.substr(0, 40)) + "' " + *why);
+        bad = true;
+        break;
+      }
+      v[n++] = std::get<double>(parsed);
+      if (comma == std::string_view::npos) break;
+      row.remove_prefix(comma + 1);
+    }
+    if (bad) continue;
+    if (n != 4) {
+      error(line, "expected 4 columns, got " + std::to_string(n));
+      continue;
+    }
+    if (!path.empty() && !(v[0] > path.back().time_s)) {
+      error(line, "time must increase strictly");
+      continue;
+    }
+    path.push_back({v[0], Vec3{v[1], v[2], v[3]} * 1e-3});
+  }
+  if (!header_seen) error(0, "empty file, expected the header 'time_s,x_mm,y_mm,z_mm'");
+  else if (path.empty() && !has_errors(result.diagnostics)) error(line, "the path has no rows");
+  if (!has_errors(result.diagnostics)) result.path = std::move(path);
+  return result;
+}
+
+std::string write_probe_forces_csv(const std::vector<ProbeForceRow>& rows) {
+  std::string out = "time_s,x_mm,y_mm,z_mm,fx_N,fy_N,fz_N,kin_fx_N,kin_fy_N,kin_fz_N,vib_fx_N,vib_fy_N,vib_fz_N\n";
+  auto add3 = [&](const Vec3& v, double scale) {
+    out += "," + format_decimal(v.x * scale) + "," + format_decimal(v.y * scale) + "," + format_decimal(v.z * scale);
+  };
+  for (const auto& r : rows) {
+    out += format_decimal(r.time_s);
+    add3(r.position_m, 1e3);
+    add3(r.total_N, 1.0);
+    add3(r.kinaesthetic_N, 1.0);
+    add3(r.vibrotactile_N, 1.0);
+    out += "\n";
+  }
+  return out;
+}
+
+}  // namespace vimg

@@ -1,0 +1,338 @@
+#include <tinyxml2.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "storage/number_text.hpp"
+#include "storage/volume/nrrd.hpp"
+#include "storage/volume/volume_scene_io.hpp"
+
+namespace vimg {
+namespace {
+
+using tinyxml2::XMLAttribute;
+using tinyxml2::XMLElement;
+
+class SceneReader {
+ public:
+  explicit SceneReader(const std::string& file) : file_(file) {}
+
+  VolumeSceneParseResult run(std::string_view xml) {
+    tinyxml2::XMLDocument doc;
+    if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
+      error(doc.ErrorLineNum(), std::string("malformed XML: ") + doc.ErrorName());
+      return finish();
+    }
+    const XMLElement* root = doc.RootElement();
+    if (!root || std::string_view(root->Name()) != "volumeScene") {
+      error(root ? root->GetLineNum() : 1, "the root element must be <volumeScene>");
+      return finish();
+    }
+    check_attributes(root, {"version"});
+    if (const char* v = root->Attribute("version"); !v || std::string_view(v).substr(0, 2) != "1.") {
+      error(root->GetLineNum(), "<volumeScene> needs version=\"1.x\"");
+    }
+    bool saw_device = false;
+    for (const XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
+      const std::string_view name = e->Name();
+      if (name == "scalarData" || name == "vectorData") read_data(e, name == "vectorData");
+      else if (name == "device") {
+        if (saw_device) error(e->GetLineNum(), "second <device>");
+        saw_device = true;
+        read_device(e);
+      } else if (name == "kinaesthetic") {
+        if (scene_.kinaesthetic) error(e->GetLineNum(), "second <kinaesthetic>");
+        read_kinaesthetic(e);
+      } else if (name == "roughness") read_roughness(e);
+      else if (name == "transitionCue") read_cue(e);
+      else error(e->GetLineNum(), "unknown element <" + std::string(name) + ">");
+    }
+    check_references();
+    return finish();
+  }
+
+ private:
+  void error(int line, std::string message) {
+    result_.diagnostics.push_back({Diagnostic::Severity::error, file_, line, std::move(message)});
+  }
+
+  VolumeSceneParseResult finish() {
+    if (!has_errors(result_.diagnostics)) result_.scene = std::move(scene_);
+    return std::move(result_);
+  }
+
+  void check_attributes(const XMLElement* e, std::initializer_list<std::string_view> allowed) {
+    for (const XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
+      bool known = false;
+      for (auto name : allowed) known = known || name == a->Name();
+      if (!known) error(e->GetLineNum(), "unknown attribute '" + std::string(a->Name()) + "' on <" + e->Name() + ">");
+    }
+  }
+
+  std::optional<std::string> text(const XMLElement* e, const char* name, bool required) {
+    const char* v = e->Attribute(name);
+    if (!v) {
+      if (required) error(e->GetLineNum(), "<" + std::string(e->Name()) + "> needs attribute '" + name + "'");
+      return std::nullopt;
+    }
+    return std::string(v);
+  }
+
+  // Reads a number attribute into `out` when present; checks min (inclusive or exclusive).
+  void number(const XMLElement* e, const char* name, double& out, double min, bool exclusive_min, bool required = false) {
+    const auto t = text(e, name, required);
+    if (!t) return;
+    const ParsedNumber parsed = parse_decimal(*t);
+    if (const auto* why = std::get_if<std::string>(&parsed)) {
+      error(e->GetLineNum(), std::string("attribute '") + name + "': '" + *t + "' " + *why);
+      return;
+    }
+    const double v = std::get<double>(parsed);
+    if (exclusive_min ? !(v > min) : !(v >= min)) {
+      error(e->GetLineNum(), std::string("attribute '") + name + "' must be " + (exclusive_min ? "> " : ">= ") + format_decimal(min) + ", got " + *t);
+      return;
+    }
+    out = v;
+  }
+
+  void any_number(const XMLElement* e, const char* name, double& out, bool required = false) {
+    number(e, name, out, -1e300, false, required);
+  }
+
+  void vector3(const XMLElement* e, const char* name, Vec3& out, bool nonzero) {
+    const auto t = text(e, name, false);
+    if (!t) return;
+    std::istringstream in(*t);
+    std::string w[4];
+    int n = 0;
+    while (n < 4 && in >> w[n]) ++n;
+    if (n != 3) {
+      error(e->GetLineNum(), std::string("attribute '") + name + "' needs three numbers, got '" + *t + "'");
+      return;
+    }
+    double v[3];
+    for (int i = 0; i < 3; ++i) {
+      const ParsedNumber p = parse_decimal(w[i]);
+      if (!std::holds_alternative<double>(p)) {
+        error(e->GetLineNum(), std::string("attribute '") + name + "': '" + w[i] + "' is not a number");
+        return;
+      }
+      v[i] = std::get<double>(p);
+    }
+    const Vec3 result{v[0], v[1], v[2]};
+    if (nonzero && norm(result) == 0.0) {
+      error(e->GetLineNum(), std::string("attribute '") + name + "' must not be the zero vector");
+      return;
+    }
+    out = result;
+  }
+
+  void read_data(const XMLElement* e, bool vector) {
+    check_attributes(e, {"id", "file"});
+    VolumeDataRef ref;
+    ref.kind = vector ? VolumeDataRef::Kind::vector : VolumeDataRef::Kind::scalar;
+    ref.source_line = e->GetLineNum();
+    ref.id = text(e, "id", true).value_or("");
+    ref.file = text(e, "file", true).value_or("");
+    for (const auto& other : scene_.data) {
+      if (!ref.id.empty() && other.id == ref.id) {
+        error(e->GetLineNum(), "duplicate data id '" + ref.id + "' (first on line " + std::to_string(other.source_line) + ")");
+      }
+    }
+    if (e->FirstChildElement()) error(e->GetLineNum(), "<" + std::string(e->Name()) + "> takes no children");
+    scene_.data.push_back(std::move(ref));
+  }
+
+  void read_device(const XMLElement* e) {
+    check_attributes(e, {"name", "maxForce", "maxStiffness", "workspace", "rate", "gateForce", "rampTime"});
+    DeviceProfile& d = scene_.device;
+    if (auto n = text(e, "name", false)) d.name = *n;
+    number(e, "maxForce", d.max_force_N, 0.0, true);
+    number(e, "maxStiffness", d.max_stiffness_N_per_m, 0.0, true);
+    vector3(e, "workspace", d.workspace_mm, true);
+    number(e, "rate", d.rate_hz, 100.0, false);
+    if (d.rate_hz > 4000.0) error(e->GetLineNum(), "attribute 'rate' must be at most 4000 Hz");
+    number(e, "gateForce", d.gate_force_N, 0.0, true);
+    number(e, "rampTime", d.ramp_time_ms, 0.0, false);
+  }
+
+  void read_kinaesthetic(const XMLElement* e) {
+    check_attributes(e, {"mode", "data", "scale", "stiffness", "damping", "yieldForce", "friction",
+                         "minGradient", "acrossForce", "followForce"});
+    KinaestheticSpec k;
+    const std::string mode = text(e, "mode", true).value_or("");
+    if (mode == "gradientForce") k.mode = KinaestheticMode::gradient_force;
+    else if (mode == "yieldingSurface") k.mode = KinaestheticMode::yielding_surface;
+    else if (mode == "vectorGuidance") k.mode = KinaestheticMode::vector_guidance;
+    else if (!mode.empty()) error(e->GetLineNum(), "mode must be gradientForce, yieldingSurface or vectorGuidance, got '" + mode + "'");
+    k.data = text(e, "data", true).value_or("");
+    any_number(e, "scale", k.scale_N_mm);
+    number(e, "stiffness", k.stiffness_N_per_m, 0.0, true);
+    number(e, "damping", k.damping_N_s_per_m, 0.0, false);
+    number(e, "yieldForce", k.yield_force_N, 0.0, false);
+    number(e, "friction", k.friction, 0.0, false);
+    number(e, "minGradient", k.min_gradient_per_mm, 0.0, false);
+    number(e, "acrossForce", k.across_force_N, 0.0, false);
+    number(e, "followForce", k.follow_force_N, 0.0, false);
+    kinaesthetic_line_ = e->GetLineNum();
+    scene_.kinaesthetic = k;
+  }
+
+  // Children <NAME value=".." OUTPUT=".."/>, sorted by strictly increasing value.
+  void read_points(const XMLElement* point, const char* output, std::vector<TransferPoint>& out, double min_output,
+                   bool exclusive) {
+    check_attributes(point, {"value", output});
+    TransferPoint p;
+    any_number(point, "value", p.value, true);
+    number(point, output, p.output, min_output, exclusive, true);
+    if (!out.empty() && !(p.value > out.back().value)) {
+      error(point->GetLineNum(), "transfer function values must increase strictly");
+    }
+    out.push_back(p);
+  }
+
+  void read_roughness(const XMLElement* e) {
+    check_attributes(e, {"data", "direction", "fullAmplitudeSpeed"});
+    RoughnessSpec r;
+    r.data = text(e, "data", true).value_or("");
+    vector3(e, "direction", r.direction, true);
+    number(e, "fullAmplitudeSpeed", r.full_amplitude_speed_mm_per_s, 0.0, true);
+    bool saw_period = false, saw_omega = false;
+    for (const XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+      const std::string_view name = c->Name();
+      if (name == "period") {
+        saw_period = true;
+        read_points(c, "mm", r.omega_points, 0.0, true);
+      } else if (name == "omega") {
+        saw_omega = true;
+        read_points(c, "radPerMm", r.omega_points, 0.0, false);
+      } else if (name == "amplitude") {
+        read_points(c, "N", r.amplitude_points, 0.0, false);
+      } else {
+        error(c->GetLineNum(), "unknown element <" + std::string(name) + "> in <roughness>");
+      }
+    }
+    if (saw_period && saw_omega) error(e->GetLineNum(), "<roughness> takes <period> or <omega> points, not both");
+    if (!saw_period && !saw_omega) error(e->GetLineNum(), "<roughness> needs <period> or <omega> points");
+    if (r.amplitude_points.empty()) error(e->GetLineNum(), "<roughness> needs <amplitude> points");
+    r.omega_given_as_period = !saw_omega;
+    roughness_lines_.push_back(e->GetLineNum());
+    scene_.roughness.push_back(std::move(r));
+  }
+
+  void read_cue(const XMLElement* e) {
+    check_attributes(e, {"data", "isoValue", "direction", "frequency", "amplitude", "decayTime"});
+    TransitionCueSpec c;
+    c.data = text(e, "data", true).value_or("");
+    any_number(e, "isoValue", c.iso_value);
+    vector3(e, "direction", c.direction, true);
+    number(e, "frequency", c.frequency_hz, 0.0, true);
+    number(e, "amplitude", c.amplitude_N, 0.0, false);
+    number(e, "decayTime", c.decay_time_ms, 0.0, true);
+    if (c.decay_time_ms > 0.0 && 1.0 / (c.decay_time_ms * 1e-3) >= 2.0 * 3.141592653589793 * c.frequency_hz) {
+      error(e->GetLineNum(), "decayTime is too short for the frequency: the cue would not oscillate");
+    }
+    if (e->FirstChildElement()) error(e->GetLineNum(), "<transitionCue> takes no children");
+    cue_lines_.push_back(e->GetLineNum());
+    scene_.transition_cues.push_back(c);
+  }
+
+  const VolumeDataRef* find(const std::string& id) const {
+    for (const auto& d : scene_.data) {
+      if (d.id == id) return &d;
+    }
+    return nullptr;
+  }
+
+  void expect_data(const std::string& id, VolumeDataRef::Kind kind, int line, const char* who) {
+    if (id.empty()) return;  // already reported
+    const VolumeDataRef* d = find(id);
+    if (!d) error(line, std::string(who) + " names data '" + id + "', which the scene does not declare");
+    else if (d->kind != kind) {
+      error(line, std::string(who) + " needs " + (kind == VolumeDataRef::Kind::scalar ? "scalar" : "vector") + " data, '" + id + "' is not");
+    }
+  }
+
+  void check_references() {
+    if (scene_.kinaesthetic) {
+      const auto kind = scene_.kinaesthetic->mode == KinaestheticMode::vector_guidance ? VolumeDataRef::Kind::vector
+                                                                                      : VolumeDataRef::Kind::scalar;
+      expect_data(scene_.kinaesthetic->data, kind, kinaesthetic_line_, "<kinaesthetic>");
+      if (scene_.kinaesthetic->stiffness_N_per_m > scene_.device.max_stiffness_N_per_m) {
+        error(kinaesthetic_line_, "stiffness exceeds the device's maxStiffness");
+      }
+    }
+    for (std::size_t i = 0; i < scene_.roughness.size(); ++i) {
+      expect_data(scene_.roughness[i].data, VolumeDataRef::Kind::scalar, roughness_lines_[i], "<roughness>");
+    }
+    for (std::size_t i = 0; i < scene_.transition_cues.size(); ++i) {
+      expect_data(scene_.transition_cues[i].data, VolumeDataRef::Kind::scalar, cue_lines_[i], "<transitionCue>");
+    }
+  }
+
+  std::string file_;
+  VolumeScene scene_;
+  VolumeSceneParseResult result_;
+  int kinaesthetic_line_ = 0;
+  std::vector<int> roughness_lines_;
+  std::vector<int> cue_lines_;
+};
+
+constexpr std::size_t kMaxSceneBytes = 4u << 20;
+
+}  // namespace
+
+VolumeSceneParseResult parse_volume_scene_xml(std::string_view xml, const std::string& file_name) {
+  if (xml.size() > kMaxSceneBytes) {
+    VolumeSceneParseResult r;
+    r.diagnostics.push_back({Diagnostic::Severity::error, file_name, 0, "scene file is larger than 4 MiB"});
+    return r;
+  }
+  return SceneReader(file_name).run(xml);
+}
+
+VolumeSceneLoadResult load_volume_scene_file(const std::filesystem::path& path) {
+  VolumeSceneLoadResult result;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    result.diagnostics.push_back({Diagnostic::Severity::error, path.string(), 0, "cannot open file"});
+    return result;
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  VolumeSceneParseResult parsed = parse_volume_scene_xml(buffer.str(), path.string());
+  result.diagnostics = std::move(parsed.diagnostics);
+  if (!parsed.scene) return result;
+  LoadedVolumeScene loaded;
+  loaded.scene = std::move(*parsed.scene);
+  for (const auto& ref : loaded.scene.data) {
+    const std::filesystem::path data_path = path.parent_path() / ref.file;
+    NrrdLoadResult nrrd = load_nrrd_file(data_path);
+    for (auto& d : nrrd.diagnostics) result.diagnostics.push_back(std::move(d));
+    if (!nrrd.ok()) {
+      result.diagnostics.push_back({Diagnostic::Severity::error, path.string(), ref.source_line,
+                                    "cannot load data '" + ref.id + "' from " + data_path.string()});
+      continue;
+    }
+    if (ref.kind == VolumeDataRef::Kind::scalar) {
+      if (!nrrd.scalar) {
+        result.diagnostics.push_back({Diagnostic::Severity::error, path.string(), ref.source_line,
+                                      "data '" + ref.id + "' is declared scalar but " + ref.file + " holds vectors"});
+        continue;
+      }
+      loaded.scalars[ref.id] = std::make_shared<const ScalarGrid>(std::move(*nrrd.scalar));
+    } else {
+      if (!nrrd.vector) {
+        result.diagnostics.push_back({Diagnostic::Severity::error, path.string(), ref.source_line,
+                                      "data '" + ref.id + "' is declared vector but " + ref.file + " holds scalars"});
+        continue;
+      }
+      loaded.vectors[ref.id] = std::make_shared<const VectorGrid>(std::move(*nrrd.vector));
+    }
+  }
+  if (!has_errors(result.diagnostics)) result.loaded = std::move(loaded);
+  return result;
+}
+
+}  // namespace vimg
