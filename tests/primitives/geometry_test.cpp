@@ -80,7 +80,7 @@ Polygon random_grid_polygon(Rng& rng) {
 
 TEST(Geometry, PolygonOverlapsAgreeWithDenseSamplingOnGridPaths) {
   Rng rng;
-  for (int trial = 0; trial < 600; ++trial) {
+  for (int trial = 0; trial < 300; ++trial) {
     const Polygon polygon = random_grid_polygon(rng);
     const auto& v = polygon.vertices;
     Vec2 p0, p1;
