@@ -1,0 +1,51 @@
+#pragma once
+// A DriveSink in front of the chosen output: it forwards every block unchanged and keeps what the
+// editor shows about it (the oscilloscope's recent samples, the time base of the output, and the
+// time from an input event to the first drive it caused). Lock-free; write() never allocates.
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "player/drive_sink.hpp"
+
+namespace vimg::editor {
+
+class DriveTap final : public DriveSink {
+ public:
+  explicit DriveTap(DriveSink& output) : output_(output) {}
+
+  void open(double sample_rate_hz) override;
+  void write(std::span<const float> drive, double block_start_time_s) override;
+  void close() override { output_.close(); }
+
+  double sample_rate_hz() const { return sample_rate_hz_.load(std::memory_order_acquire); }
+  // The renderer-clock time of the first sample written (NaN before the first block).
+  double first_block_time_s() const { return first_block_time_s_.load(std::memory_order_acquire); }
+
+  // The most recent samples, oldest first (GUI thread).
+  void copy_recent(std::vector<float>& out, std::size_t count) const;
+
+  // Called by the input thread when it pushes an event (monotonic seconds).
+  void note_event(double event_time_s) { last_event_time_s_.store(event_time_s, std::memory_order_release); }
+  // Latencies from the last input event to the write() of a block that starts drive after
+  // silence, in seconds; at most kMaxLatencies are kept.
+  std::vector<double> latencies_s() const;
+
+  static constexpr std::size_t kRingSize = 8192;
+  static constexpr std::size_t kMaxLatencies = 1024;
+
+ private:
+  DriveSink& output_;
+  std::atomic<double> sample_rate_hz_{0.0};
+  std::atomic<double> first_block_time_s_;
+  std::array<std::atomic<float>, kRingSize> ring_{};
+  std::atomic<std::size_t> written_{0};
+  std::atomic<double> last_event_time_s_{0.0};
+  bool was_silent_ = true;  // render thread only
+  std::array<std::atomic<double>, kMaxLatencies> latencies_{};
+  std::atomic<std::size_t> latency_count_{0};
+};
+
+}  // namespace vimg::editor

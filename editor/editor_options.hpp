@@ -1,0 +1,35 @@
+#pragma once
+// The command line of vimg-editor.
+#include <optional>
+#include <string>
+
+#include "editor/output_choice.hpp"
+
+namespace vimg::editor {
+
+struct EditorOptions {
+  std::string file;                 // opened at start (may be empty)
+  std::string recovery_dir;         // empty: RecoveryStore::default_dir()
+  std::string library_dir;          // the user's library folder; empty: ~/vibroimages
+  std::string record_gesture;       // record in playing mode and write the gesture here on stop
+  OutputChoice output;
+  double sample_rate_hz = 8000.0;
+  double autosave_interval_s = 5.0;
+  double zoom = 1.0;                // 1 = physical size
+  double px_per_mm = 0.0;           // 0: from the display's DPI
+  int width_px = 1280;
+  int height_px = 800;
+  bool print_layout = false;        // print where widgets are (for scripted tests)
+  int benchmark_frames = 0;         // render this many frames as fast as possible, report, exit
+  bool play_at_start = false;
+};
+
+struct ParsedOptions {
+  std::optional<EditorOptions> options;  // empty: exit with `exit_code` after printing `message`
+  int exit_code = 0;
+  std::string message;
+};
+
+ParsedOptions parse_editor_options(int argc, char** argv);
+
+}  // namespace vimg::editor

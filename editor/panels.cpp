@@ -1,0 +1,390 @@
+// The side panels: tools and library (left), properties of the selection or the document, and
+// validation messages (right), the oscilloscope in playing mode (bottom).
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <regex>
+
+#include "editor/core/element_ids.hpp"
+#include "editor/editor_app.hpp"
+#include "player/touch_event.hpp"
+#include "storage/image_io.hpp"
+
+namespace vimg::editor {
+namespace {
+
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                         ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                         ImGuiWindowFlags_NoBringToFrontOnFocus;
+constexpr const char* kLibraryPayload = "VIMG_LIBRARY_FILE";
+
+// A number field with its unit and valid range; the value is clamped into the range. `open_min`
+// and `open_max` mark exclusive bounds (the value stays just inside). Returns true on a change.
+bool number_field(const char* label, double& value, const char* unit, double min, double max, bool open_min = false,
+                  bool open_max = false) {
+  double v = value;
+  char tip[96];
+  std::snprintf(tip, sizeof tip, "%s%g, %g%s %s", open_min ? "(" : "[", min, max, open_max ? ")" : "]", unit);
+  ImGui::SetNextItemWidth(120);
+  const bool edited = ImGui::InputDouble(label, &v, 0.0, 0.0, "%.6g");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("range %s", tip);
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s %s", unit, tip);
+  if (!edited || !std::isfinite(v)) return false;
+  const double eps = 1e-9 * std::max(1.0, std::abs(max - min));
+  v = std::clamp(v, open_min ? min + eps : min, open_max ? max - eps : max);
+  if (v == value) return false;
+  value = v;
+  return true;
+}
+
+}  // namespace
+
+void EditorApp::track_widget_gesture() {
+  if (ImGui::IsItemActivated()) doc_.begin_gesture();
+  if (ImGui::IsItemDeactivated()) doc_.end_gesture();
+}
+
+void EditorApp::draw_tools_panel(float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin("Tools", nullptr, kPanelFlags);
+  const bool playing = play_mode_;
+  if (ImGui::Button(playing ? "Stop playing (F5)" : "Play (F5)", ImVec2(-1, 30))) set_play_mode(!playing);
+  print_layout("play_button", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+               ImGui::GetItemRectSize().y);
+  if (playing && play_) {
+    bool rec = play_->recording();
+    if (ImGui::Checkbox("Record gesture", &rec)) play_->set_recording(rec);
+    ImGui::TextDisabled("%zu samples recorded", play_->recorder().samples().size());
+    ImGui::TextWrapped("Rub the canvas with the mouse or your fingers.");
+  }
+  ImGui::Separator();
+  ImGui::BeginDisabled(playing);
+  struct ToolButton {
+    Tool tool;
+    const char* label;
+  };
+  static constexpr ToolButton kTools[] = {{Tool::select, "Select (V)"},       {Tool::dot, "DOT (D)"},
+                                          {Tool::line, "LINE (L)"},           {Tool::rect, "SURFACE rect (R)"},
+                                          {Tool::ellipse, "SURFACE ellipse (E)"}, {Tool::polygon, "SURFACE polygon (P)"}};
+  for (const ToolButton& t : kTools) {
+    if (ImGui::RadioButton(t.label, tool_ == t.tool)) {
+      tool_ = t.tool;
+      polygon_points_.clear();
+    }
+  }
+  if (tool_ == Tool::polygon) ImGui::TextWrapped("Click the vertices; Enter or a click on the first one closes.");
+  ImGui::Checkbox("Grid (G)", &show_grid_);
+  ImGui::SameLine();
+  ImGui::Checkbox("Snap (S)", &snap_);
+  ImGui::EndDisabled();
+
+  ImGui::Separator();
+  ImGui::Text("Library");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Refresh")) refresh_library();
+  ImGui::TextDisabled("drag an image onto the canvas");
+  ImGui::BeginChild("##library", ImVec2(0, 0), true);
+  for (const auto& path : library_) {
+    const std::string name = path.parent_path().filename().string() + "/" + path.filename().string();
+    ImGui::Selectable(name.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", path.c_str());
+    if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(0)) request(PendingAction::open_file, path.string());
+    if (!playing && ImGui::BeginDragDropSource()) {
+      const std::string p = path.string();
+      ImGui::SetDragDropPayload(kLibraryPayload, p.data(), p.size());
+      ImGui::Text("place %s", name.c_str());
+      ImGui::EndDragDropSource();
+    }
+  }
+  ImGui::EndChild();
+  ImGui::End();
+}
+
+void EditorApp::refresh_library() {
+  library_.clear();
+  std::vector<std::filesystem::path> dirs{VIMG_EXAMPLES_DIR};
+  if (!options_.library_dir.empty()) {
+    dirs.emplace_back(options_.library_dir);
+  } else if (const char* home = std::getenv("HOME"); home && *home) {
+    dirs.push_back(std::filesystem::path(home) / "vibroimages");
+  }
+  for (const auto& dir : dirs) {
+    std::error_code ec;
+    std::vector<std::filesystem::path> found;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+      const auto ext = entry.path().extension();
+      if (entry.is_regular_file() && (ext == ".vimg" || ext == ".png")) found.push_back(entry.path());
+    }
+    std::sort(found.begin(), found.end());
+    library_.insert(library_.end(), found.begin(), found.end());
+  }
+}
+
+void EditorApp::draw_properties_panel(float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin("Properties", nullptr, kPanelFlags);
+  ImGui::BeginDisabled(play_mode_ && false);
+  if (doc_.selection().size() == 1) {
+    draw_element_properties(doc_.selection().front());
+  } else if (doc_.selection().size() > 1) {
+    ImGui::Text("%zu elements selected", doc_.selection().size());
+    if (ImGui::Button("Group (Ctrl+G)")) doc_.group_selection();
+  } else {
+    draw_document_properties();
+  }
+  ImGui::EndDisabled();
+  ImGui::End();
+}
+
+void EditorApp::draw_element_properties(const std::string& id) {
+  const Element* current = doc_.find(id);
+  if (!current) return;
+  Element e = *current;
+  bool changed = false;
+  auto field = [&](const char* label, double& v, const char* unit, double min, double max, bool open_min = false,
+                   bool open_max = false) {
+    changed |= number_field(label, v, unit, min, max, open_min, open_max);
+    track_widget_gesture();
+    print_layout(label, ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                 ImGui::GetItemRectSize().y);
+  };
+  // Wherever a coordinate may go: the document's size bound of the spec, with room off the canvas.
+  constexpr double kCoord = 10000.0;
+
+  ImGui::Text("%s", kind_name(e).c_str());
+  static char id_buffer[128];
+  static std::string id_for;
+  if (id_for != id || !ImGui::IsAnyItemActive()) {
+    std::snprintf(id_buffer, sizeof id_buffer, "%s", id.c_str());
+    id_for = id;
+  }
+  ImGui::SetNextItemWidth(160);
+  if (ImGui::InputText("id", id_buffer, sizeof id_buffer, ImGuiInputTextFlags_EnterReturnsTrue)) {
+    static const std::regex kIdPattern("[A-Za-z_][A-Za-z0-9_.-]*");
+    const std::string wanted = id_buffer;
+    const auto ids = collect_ids(doc_.image());
+    if (!std::regex_match(wanted, kIdPattern)) {
+      status_ = "an id starts with a letter or _ and holds letters, digits, _ . -";
+    } else if (wanted != id && ids.count(wanted)) {
+      status_ = "id " + wanted + " is already used";
+    } else {
+      e.id = wanted;
+      changed = true;
+    }
+  }
+  if (auto* d = std::get_if<Dot>(&e.body)) {
+    field("x##dot", d->x_mm, "mm", -kCoord, kCoord);
+    field("y##dot", d->y_mm, "mm", -kCoord, kCoord);
+    field("radius", d->radius_mm, "mm", 0, kCoord, true);
+    field("gain##dot", d->gain, "", 0, 1);
+  } else if (auto* l = std::get_if<Line>(&e.body)) {
+    field("x1", l->x1_mm, "mm", -kCoord, kCoord);
+    field("y1", l->y1_mm, "mm", -kCoord, kCoord);
+    field("x2", l->x2_mm, "mm", -kCoord, kCoord);
+    field("y2", l->y2_mm, "mm", -kCoord, kCoord);
+    field("width##line", l->width_mm, "mm", 0, kCoord, true);
+    field("frequency", l->frequency_hz, "Hz", 0, 1000, true);
+    field("damping", l->damping, "", 0, 1, true, true);
+    field("gain##line", l->gain, "", 0, 1);
+  } else if (auto* s = std::get_if<Surface>(&e.body)) {
+    static constexpr const char* kShapes[] = {"rect", "ellipse", "polygon"};
+    int shape = static_cast<int>(s->shape);
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::Combo("shape", &shape, kShapes, 3)) {
+      // Keep the same place and size in the new shape.
+      const RectMm b = element_bounds(e).value_or(RectMm{0, 0, 10, 10});
+      s->shape = static_cast<SurfaceShape>(shape);
+      s->x_mm = b.x0_mm;
+      s->y_mm = b.y0_mm;
+      s->width_mm = std::max(0.1, b.width_mm());
+      s->height_mm = std::max(0.1, b.height_mm());
+      s->cx_mm = (b.x0_mm + b.x1_mm) / 2;
+      s->cy_mm = (b.y0_mm + b.y1_mm) / 2;
+      s->rx_mm = std::max(0.05, b.width_mm() / 2);
+      s->ry_mm = std::max(0.05, b.height_mm() / 2);
+      s->points = {{b.x0_mm, b.y0_mm}, {b.x1_mm, b.y0_mm}, {b.x1_mm, b.y1_mm}, {b.x0_mm, b.y1_mm}};
+      if (s->shape != SurfaceShape::rect) s->x_mm = s->y_mm = s->width_mm = s->height_mm = 0;
+      if (s->shape != SurfaceShape::ellipse) s->cx_mm = s->cy_mm = s->rx_mm = s->ry_mm = 0;
+      if (s->shape != SurfaceShape::polygon) s->points.clear();
+      changed = true;
+    }
+    if (s->shape == SurfaceShape::rect) {
+      field("x##rect", s->x_mm, "mm", -kCoord, kCoord);
+      field("y##rect", s->y_mm, "mm", -kCoord, kCoord);
+      field("width##rect", s->width_mm, "mm", 0, kCoord, true);
+      field("height##rect", s->height_mm, "mm", 0, kCoord, true);
+    } else if (s->shape == SurfaceShape::ellipse) {
+      field("cx", s->cx_mm, "mm", -kCoord, kCoord);
+      field("cy", s->cy_mm, "mm", -kCoord, kCoord);
+      field("rx", s->rx_mm, "mm", 0, kCoord, true);
+      field("ry", s->ry_mm, "mm", 0, kCoord, true);
+    } else {
+      ImGui::Text("%zu points (x, y mm)", s->points.size());
+      for (std::size_t i = 0; i < s->points.size(); ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        double xy[2] = {s->points[i].x_mm, s->points[i].y_mm};
+        ImGui::SetNextItemWidth(200);
+        if (ImGui::InputScalarN("##pt", ImGuiDataType_Double, xy, 2, nullptr, nullptr, "%.6g") &&
+            std::isfinite(xy[0]) && std::isfinite(xy[1])) {
+          s->points[i] = {std::clamp(xy[0], -kCoord, kCoord), std::clamp(xy[1], -kCoord, kCoord)};
+          changed = true;
+        }
+        track_widget_gesture();
+        if (s->points.size() > 3) {
+          ImGui::SameLine();
+          if (ImGui::SmallButton("-")) {
+            s->points.erase(s->points.begin() + static_cast<std::ptrdiff_t>(i));
+            changed = true;
+            ImGui::PopID();
+            break;
+          }
+        }
+        ImGui::PopID();
+      }
+      if (ImGui::SmallButton("add point")) {
+        const Point2Mm a = s->points.back();
+        const Point2Mm b = s->points.front();
+        s->points.push_back({(a.x_mm + b.x_mm) / 2, (a.y_mm + b.y_mm) / 2});
+        changed = true;
+      }
+    }
+    field("period", s->period_mm, "mm", 0, kCoord, true);
+    field("relief", s->relief_mm, "mm", 0, kCoord, true);
+    static constexpr const char* kPatterns[] = {"sine", "square", "triangle"};
+    int pattern = static_cast<int>(s->pattern);
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::Combo("pattern", &pattern, kPatterns, 3)) {
+      s->pattern = static_cast<SurfacePattern>(pattern);
+      changed = true;
+    }
+    field("gain##surface", s->gain, "", 0, 1);
+  } else if (auto* g = std::get_if<Group>(&e.body)) {
+    static char name_buffer[256];
+    static std::string name_for;
+    if (name_for != id || !ImGui::IsAnyItemActive()) {
+      std::snprintf(name_buffer, sizeof name_buffer, "%s", g->name.value_or("").c_str());
+      name_for = id;
+    }
+    ImGui::SetNextItemWidth(200);
+    if (ImGui::InputText("name", name_buffer, sizeof name_buffer, ImGuiInputTextFlags_EnterReturnsTrue)) {
+      g->name = name_buffer[0] ? std::optional<std::string>(name_buffer) : std::nullopt;
+      changed = true;
+    }
+    ImGui::Text("%zu members", g->children.size());
+    if (ImGui::Button("Ungroup (Ctrl+Shift+G)")) doc_.ungroup_selection();
+  } else {
+    ImGui::TextWrapped("An element this version does not know; it is kept as it is.");
+  }
+  if (changed && !play_mode_) doc_.replace_element(id, e);
+}
+
+void EditorApp::draw_document_properties() {
+  Image settings = doc_.image();
+  settings.children.clear();
+  bool changed = false;
+  auto field = [&](const char* label, double& v, const char* unit, double min, double max, bool open_min = false) {
+    changed |= number_field(label, v, unit, min, max, open_min);
+    track_widget_gesture();
+    print_layout(label, ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                 ImGui::GetItemRectSize().y);
+  };
+  ImGui::Text("Document (select an element to edit it)");
+  field("width##doc", settings.width_mm, "mm", 0, 10000, true);
+  field("height##doc", settings.height_mm, "mm", 0, 10000, true);
+  ImGui::Separator();
+  ImGui::Text("Finger (interaction point)");
+  InteractionParams ip = settings.effective_interaction();
+  const InteractionParams before = ip;
+  field("mass", ip.mass_kg, "kg", 0, 10, true);
+  field("full speed", ip.full_speed_mm_per_s, "mm/s", 0, 100000, true);
+  field("max deformation", ip.max_deformation_mm, "mm", 0, 100, true);
+  if (!(ip == before)) settings.interaction = ip;
+  ImGui::Separator();
+  ImGui::Text("Meta");
+  Meta meta = settings.meta.value_or(Meta{});
+  auto text_field = [&](const char* label, std::optional<std::string>& value) {
+    static char buffers[4][512];
+    static std::string shown[4];
+    const int slot = static_cast<int>(std::strlen(label)) % 4;
+    ImGui::PushID(label);
+    const std::string current = value.value_or("");
+    if (shown[slot] != current && !ImGui::IsAnyItemActive()) {
+      std::snprintf(buffers[slot], sizeof buffers[slot], "%s", current.c_str());
+      shown[slot] = current;
+    }
+    ImGui::SetNextItemWidth(220);
+    if (ImGui::InputText(label, buffers[slot], sizeof buffers[slot], ImGuiInputTextFlags_EnterReturnsTrue)) {
+      value = buffers[slot][0] ? std::optional<std::string>(buffers[slot]) : std::nullopt;
+      changed = true;
+    }
+    ImGui::PopID();
+  };
+  text_field("title", meta.title);
+  text_field("author", meta.author);
+  text_field("description", meta.description);
+  if (changed) {
+    if (!(meta == settings.meta.value_or(Meta{})) || settings.meta) settings.meta = meta;
+    if (!play_mode_) doc_.replace_image_settings(settings);
+  }
+  ImGui::Separator();
+  ImGui::TextDisabled("Canvas: %g x %g mm, %zu top-level elements", doc_.image().width_mm, doc_.image().height_mm,
+                      doc_.image().children.size());
+}
+
+void EditorApp::refresh_validation() {
+  if (validated_change_ == doc_.change_count()) return;
+  const double now = monotonic_time_s();
+  if (validation_due_s_ == 0.0) validation_due_s_ = now + 0.3;  // wait for a pause in editing
+  if (now < validation_due_s_ || doc_.in_gesture()) return;
+  validation_due_s_ = 0.0;
+  validated_change_ = doc_.change_count();
+  // Check the document exactly as a reader will: write it canonically and read it back.
+  const std::string name = document_path_.empty() ? "untitled.vimg" : document_path_;
+  LoadResult result = parse_image_xml(write_image_xml(doc_.image()), name);
+  diagnostics_ = result.diagnostics;
+}
+
+void EditorApp::draw_messages_panel(float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin("Validation", nullptr, kPanelFlags);
+  if (diagnostics_.empty() && load_diagnostics_.empty()) {
+    ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "The image is valid.");
+  }
+  for (const auto* list : {&load_diagnostics_, &diagnostics_}) {
+    for (const Diagnostic& d : *list) {
+      const ImVec4 colour = d.severity == Diagnostic::Severity::error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f)
+                                                                      : ImVec4(1.0f, 0.85f, 0.4f, 1.0f);
+      ImGui::PushStyleColor(ImGuiCol_Text, colour);
+      ImGui::TextWrapped("%s", d.to_string().c_str());
+      ImGui::PopStyleColor();
+    }
+  }
+  ImGui::End();
+}
+
+void EditorApp::draw_scope_panel(float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin("Drive (oscilloscope)", nullptr, kPanelFlags);
+  const DriveTap* tap = play_ ? play_->tap() : nullptr;
+  const double rate = tap ? tap->sample_rate_hz() : 0.0;
+  const std::size_t count = rate > 0 ? static_cast<std::size_t>(rate * 0.1) : 800;  // the last 100 ms
+  if (tap) tap->copy_recent(scope_samples_, count);
+  const LoopStats stats = play_ ? play_->stats() : LoopStats{};
+  ImGui::Text("last 100 ms at %.0f Hz | loop %.0f Hz, jitter p99 %.2f ms | overruns %llu | contacts %llu", rate,
+              stats.measured_rate_hz, stats.jitter_p99_s * 1e3, static_cast<unsigned long long>(stats.overruns),
+              static_cast<unsigned long long>(stats.active_contacts));
+  ImGui::PlotLines("##drive", scope_samples_.data(), static_cast<int>(scope_samples_.size()), 0, nullptr, -1.0f, 1.0f,
+                   ImVec2(-1, -1));
+  ImGui::End();
+}
+
+}  // namespace vimg::editor

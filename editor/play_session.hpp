@@ -1,0 +1,70 @@
+#pragma once
+// Playing mode: the document compiled into a scene, played by the real-time renderer to the
+// chosen output through a DriveTap, with the finger trail and the gesture being recorded.
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "editor/core/gesture_recorder.hpp"
+#include "editor/drive_tap.hpp"
+#include "player/drive_sink.hpp"
+#include "player/realtime_renderer.hpp"
+#include "primitives/image.hpp"
+
+namespace vimg::editor {
+
+struct TrailPoint {
+  double x_mm = 0.0;
+  double y_mm = 0.0;
+  double time_s = 0.0;  // monotonic
+};
+
+class PlaySession {
+ public:
+  // Makes the output the renderer drives, anew for every start (see output_choice.hpp).
+  using OutputFactory = std::function<std::unique_ptr<DriveSink>(std::string& error)>;
+  PlaySession(OutputFactory make_output, double sample_rate_hz);
+  ~PlaySession();
+
+  // Starts playing `image`. Returns an error message on failure.
+  std::optional<std::string> start(const Image& image);
+  // Plays the changed document from now on (the renderer cross-fades).
+  void update(const Image& image);
+  // Stops the renderer and completes the output (a WAV file is written here).
+  void stop();
+  bool playing() const { return renderer_ && renderer_->running(); }
+
+  // Input from the GUI thread; time on the renderer's clock (monotonic_time_s()).
+  void touch(int finger, TouchPhase phase, double x_mm, double y_mm, double time_s);
+
+  // Fingers currently down, by finger index: their last position.
+  const std::vector<std::optional<TrailPoint>>& fingers() const { return fingers_; }
+  const std::deque<TrailPoint>& trail() const { return trail_; }
+  void forget_trail_older_than(double time_s);
+
+  // The tap of the current (or last) run; null before the first start.
+  const DriveTap* tap() const { return tap_.get(); }
+  LoopStats stats() const { return renderer_ ? renderer_->stats() : LoopStats{}; }
+
+  // Gesture recording: times are seconds on the output's time axis (0 = the first sample written).
+  void set_recording(bool on);
+  bool recording() const { return recording_; }
+  const GestureRecorder& recorder() const { return recorder_; }
+
+ private:
+  OutputFactory make_output_;
+  std::unique_ptr<DriveSink> output_;
+  std::unique_ptr<DriveTap> tap_;
+  std::unique_ptr<RealtimeRenderer> renderer_;
+  double sample_rate_hz_;
+  std::vector<std::optional<TrailPoint>> fingers_;
+  std::deque<TrailPoint> trail_;
+  GestureRecorder recorder_;
+  bool recording_ = false;
+  double start_time_s_ = 0.0;
+};
+
+}  // namespace vimg::editor
