@@ -1,0 +1,38 @@
+#pragma once
+// The few hidapi calls the HID force device needs, behind an interface: hidapi in production,
+// an emulated device in tests. Byte 0 of every buffer is the report id.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+
+namespace vimg {
+
+class HidTransport {
+ public:
+  virtual ~HidTransport() = default;
+  // Returns the bytes written, or -1 on error.
+  virtual int write(std::span<const std::uint8_t> report) = 0;
+  // Waits up to timeout_ms (0: do not wait) for an input report. Returns its size, 0 on timeout,
+  // -1 on error.
+  virtual int read(std::span<std::uint8_t> buffer, int timeout_ms) = 0;
+  // buffer[0] holds the requested report id. Returns the size read, or -1 on error.
+  virtual int get_feature_report(std::span<std::uint8_t> buffer) = 0;
+};
+
+// hidapi (hidraw backend). Opens the first device with the ids, or a given hidraw path.
+class HidapiTransport final : public HidTransport {
+ public:
+  static std::unique_ptr<HidapiTransport> open(std::uint16_t vendor_id, std::uint16_t product_id, std::string& error);
+  static std::unique_ptr<HidapiTransport> open_path(const std::string& path, std::string& error);
+  ~HidapiTransport() override;
+  int write(std::span<const std::uint8_t> report) override;
+  int read(std::span<std::uint8_t> buffer, int timeout_ms) override;
+  int get_feature_report(std::span<std::uint8_t> buffer) override;
+
+ private:
+  explicit HidapiTransport(void* device) : device_(device) {}
+  void* device_;  // hid_device*
+};
+
+}  // namespace vimg
