@@ -19,8 +19,9 @@ struct Rgb {
 // Canvas and colours (0..255).
 constexpr Rgb kBackground{255, 255, 255};
 constexpr Rgb kDotColour{25, 25, 35};
-constexpr Rgb kLowFrequencyColour{235, 120, 20};   // 10 Hz and below
-constexpr Rgb kHighFrequencyColour{120, 30, 200};  // 1000 Hz
+constexpr Rgb kLowFrequencyColour{240, 140, 0};    // 20 Hz and below: orange
+constexpr Rgb kMidFrequencyColour{220, 30, 90};    // ~140 Hz (geometric middle): crimson
+constexpr Rgb kHighFrequencyColour{110, 40, 200};  // 1000 Hz: violet
 constexpr Rgb kSurfaceColour{20, 120, 150};
 
 // A shape as a signed distance (mm, negative inside) over a bounding box.
@@ -161,8 +162,10 @@ void draw_surface(Painter& painter, const Surface& s) {
 
 void draw_line(Painter& painter, const Line& l) {
   const double half = l.width_mm / 2.0;
-  const double t = std::clamp(std::log10(std::max(l.frequency_hz, 10.0) / 10.0) / 2.0, 0.0, 1.0);
-  const Rgb base = mix(kLowFrequencyColour, kHighFrequencyColour, t);
+  // Colour by frequency on a log scale from 20 Hz to 1000 Hz: orange, crimson, violet.
+  const double t = std::clamp(std::log(std::max(l.frequency_hz, 20.0) / 20.0) / std::log(50.0), 0.0, 1.0);
+  const Rgb base = t < 0.5 ? mix(kLowFrequencyColour, kMidFrequencyColour, 2.0 * t)
+                           : mix(kMidFrequencyColour, kHighFrequencyColour, 2.0 * t - 1.0);
   // Ripple along the stroke: 2 mm wavelength at 175 Hz, inversely proportional to frequency.
   const double ripple_mm = 350.0 / l.frequency_hz;
   const double dx = l.x2_mm - l.x1_mm;
