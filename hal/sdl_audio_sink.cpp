@@ -1,0 +1,137 @@
+#include "hal/sdl_audio_sink.hpp"
+
+#include <SDL.h>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+#include "hal/rest_on_exit.hpp"
+
+namespace vimg {
+
+namespace {
+std::string driver_name() {
+  const char* name = SDL_GetCurrentAudioDriver();
+  return name != nullptr ? name : "none";
+}
+}  // namespace
+
+SdlAudioSink::SdlAudioSink(SdlAudioOptions options) : options_(std::move(options)) {}
+
+SdlAudioSink::~SdlAudioSink() { close(); }
+
+std::vector<std::string> SdlAudioSink::output_device_names() {
+  std::vector<std::string> names;
+  const int count = SDL_GetNumAudioDevices(0);
+  for (int i = 0; i < count; ++i) {
+    if (const char* name = SDL_GetAudioDeviceName(i, 0)) names.emplace_back(name);
+  }
+  return names;
+}
+
+void SdlAudioSink::open(double sample_rate_hz) {
+  close();
+  if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) {
+    throw std::runtime_error(std::string("audio: cannot start SDL audio: ") + SDL_GetError());
+  }
+  subsystem_ = true;
+  const char* device_name = nullptr;
+  if (!options_.device_name.empty()) {
+    const auto names = output_device_names();
+    bool found = false;
+    std::string list;
+    for (const auto& name : names) {
+      found = found || name == options_.device_name;
+      list += (list.empty() ? "" : ", ") + ("'" + name + "'");
+    }
+    if (!found) {
+      const std::string driver = driver_name();
+      close();
+      throw std::runtime_error("audio (" + driver + "): no output device named '" + options_.device_name +
+                               "'; available: " + (list.empty() ? "none" : list));
+    }
+    device_name = options_.device_name.c_str();
+  }
+  ring_ = std::make_unique<SampleRing>(static_cast<std::size_t>(options_.ring_frames));
+  SDL_AudioSpec wanted{};
+  wanted.freq = static_cast<int>(std::lround(sample_rate_hz));
+  wanted.format = AUDIO_F32SYS;
+  wanted.channels = 1;
+  wanted.samples = static_cast<Uint16>(options_.device_buffer_frames);
+  wanted.callback = &SdlAudioSink::callback;
+  wanted.userdata = this;
+  SDL_AudioSpec obtained{};
+  // No changes allowed: SDL converts to what the hardware takes, we always see mono float32.
+  device_ = SDL_OpenAudioDevice(device_name, 0, &wanted, &obtained, 0);
+  if (device_ == 0) {
+    const std::string error = SDL_GetError();
+    const std::string driver = driver_name();
+    close();
+    throw std::runtime_error("audio (" + driver + "): cannot open " +
+                             (device_name != nullptr ? "'" + std::string(device_name) + "'" : std::string("the default device")) +
+                             " at " + std::to_string(wanted.freq) + " Hz: " + error);
+  }
+  sample_rate_hz_ = sample_rate_hz;
+  obtained_frames_ = obtained.samples;
+  started_.store(false);
+  SDL_PauseAudioDevice(device_, 0);
+}
+
+void SdlAudioSink::callback(void* self_pointer, std::uint8_t* stream, int length) {
+  auto& self = *static_cast<SdlAudioSink*>(self_pointer);
+  const std::span<float> out(reinterpret_cast<float*>(stream), static_cast<std::size_t>(length) / sizeof(float));
+  const std::size_t got = self.ring_->pop(out);
+  for (std::size_t i = got; i < out.size(); ++i) out[i] = 0.0f;
+  if (got < out.size() && self.started_.load(std::memory_order_relaxed)) {
+    self.underruns_.fetch_add(1, std::memory_order_relaxed);
+  }
+}
+
+void SdlAudioSink::write(std::span<const float> drive, double) {
+  if (device_ == 0) {
+    return;
+  }
+  if (rest_requested()) {
+    close();
+    return;
+  }
+  while (!drive.empty()) {
+    const std::size_t pushed = ring_->push(drive);
+    drive = drive.subspan(pushed);
+    if (pushed > 0) started_.store(true, std::memory_order_relaxed);
+    if (!drive.empty()) {
+      // The device has not taken enough yet: wait about one device buffer's worth.
+      const auto wait = std::chrono::duration<double>(obtained_frames_ / sample_rate_hz_ / 4.0);
+      std::this_thread::sleep_for(wait);
+    }
+  }
+}
+
+double SdlAudioSink::buffer_latency_s() const {
+  if (sample_rate_hz_ <= 0.0) return 0.0;
+  return (obtained_frames_ + options_.ring_frames) / sample_rate_hz_;
+}
+
+void SdlAudioSink::close() {
+  if (device_ != 0) {
+    started_.store(false);  // from here silence is the end of the stream, not an underrun
+    if (!rest_requested()) {
+      // Let what was written play out (bounded by the ring length), then stop.
+      for (int i = 0; i < 100 && ring_->size() > 0; ++i) {
+        std::this_thread::sleep_for(std::chrono::duration<double>(obtained_frames_ / sample_rate_hz_ / 2.0));
+      }
+      std::this_thread::sleep_for(std::chrono::duration<double>(2.0 * obtained_frames_ / sample_rate_hz_));
+    }
+    started_.store(false);
+    SDL_CloseAudioDevice(device_);  // waits for the callback to return
+    device_ = 0;
+  }
+  if (subsystem_) {
+    SDL_QuitSubSystem(SDL_INIT_AUDIO);
+    subsystem_ = false;
+  }
+}
+
+}  // namespace vimg
