@@ -34,6 +34,9 @@ bool LiveTracker::apply(const TouchEvent& e, double now_s) {
     f.event_time_s = e.time_s;
     f.event_x_m = x;
     f.event_y_m = y;
+    f.anchor_time_s = e.time_s;
+    f.anchor_x_m = x;
+    f.anchor_y_m = y;
     f.pressure = pressure;
     return true;
   }
@@ -46,15 +49,13 @@ bool LiveTracker::apply(const TouchEvent& e, double now_s) {
     f.event_time_s = std::max(f.event_time_s, e.time_s);
     return true;
   }
-  const double dt = e.time_s - f.event_time_s;
-  if (dt < options_.min_interval_s) {
-    // Too close to the previous event to give a usable velocity: take the position only.
-    f.event_x_m = x;
-    f.event_y_m = y;
-    return true;
-  }
-  const double raw_vx = (x - f.event_x_m) / dt;
-  const double raw_vy = (y - f.event_y_m) / dt;
+  f.event_time_s = std::max(f.event_time_s, e.time_s);
+  f.event_x_m = x;
+  f.event_y_m = y;
+  const double dt = e.time_s - f.anchor_time_s;
+  if (dt < options_.min_interval_s) return true;  // too close for a usable velocity: position only
+  const double raw_vx = (x - f.anchor_x_m) / dt;
+  const double raw_vy = (y - f.anchor_y_m) / dt;
   if (!f.has_velocity) {
     f.vx_m_per_s = raw_vx;
     f.vy_m_per_s = raw_vy;
@@ -64,9 +65,9 @@ bool LiveTracker::apply(const TouchEvent& e, double now_s) {
     f.vx_m_per_s += a * (raw_vx - f.vx_m_per_s);
     f.vy_m_per_s += a * (raw_vy - f.vy_m_per_s);
   }
-  f.event_time_s = e.time_s;
-  f.event_x_m = x;
-  f.event_y_m = y;
+  f.anchor_time_s = e.time_s;
+  f.anchor_x_m = x;
+  f.anchor_y_m = y;
   return true;
 }
 

@@ -3,7 +3,8 @@
 //
 // Velocity: each event gives a raw velocity (displacement / event interval). It is smoothed by a
 // first-order low-pass whose weight depends on the real interval, a = 1 - exp(-dt / tau), so
-// irregular timing is handled exactly; intervals below min_interval_s are merged into the next.
+// irregular timing is handled exactly; an event closer than min_interval_s to the
+// previous velocity anchor updates the position only, and the next raw velocity spans both.
 // Position between events: dead reckoning from the last event with the filtered velocity, for at
 // most max_extrapolation_s, then held. When the next event arrives the position continues from the
 // reckoned point towards it over the following step, so the path stays continuous.
@@ -47,6 +48,9 @@ class LiveTracker {
     double event_time_s = 0.0;    // last event
     double event_x_m = 0.0;
     double event_y_m = 0.0;
+    double anchor_time_s = 0.0;   // the event that the next raw velocity is measured from
+    double anchor_x_m = 0.0;
+    double anchor_y_m = 0.0;
     double vx_m_per_s = 0.0;      // filtered
     double vy_m_per_s = 0.0;
     double pressure = 1.0;
