@@ -1,10 +1,12 @@
 #pragma once
 // Turns a normalized drive signal into what an amplitude-envelope device (DRV2605L RTP) can play:
 // its envelope and its carrier frequency.
-// Envelope: instant attack to |x|, then the peak is held for one period of the nominal carrier (so the
-// ripple of a carrier, sampled peaks included, does not reach the envelope), then it decays exponentially with release_time_s.
+// Envelope: the peak of |x| over the last one to two periods of the nominal carrier (two windows of
+// one period each, so the ripple of a carrier never reaches the envelope); it follows a rising peak
+// at once and a falling one exponentially with release_time_s.
 // Frequency: the interval between positive-going zero crossings (hysteresis 0.02), 0 when the last
 // crossing is older than 50 ms.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -22,7 +24,9 @@ class EnvelopeFollower {
 
   void reset() {
     envelope_ = 0.0;
-    since_peak_ = 0;
+    window_count_ = 0;
+    current_window_max_ = 0.0;
+    previous_window_max_ = 0.0;
     sample_index_ = 0;
     last_rise_index_ = -1;
     frequency_hz_ = 0.0;
@@ -31,14 +35,14 @@ class EnvelopeFollower {
 
   void push(float sample) {
     const double magnitude = std::fabs(static_cast<double>(sample));
-    if (magnitude >= envelope_) {
-      envelope_ = magnitude;
-      since_peak_ = 0;
-    } else if (since_peak_ < hold_samples_) {
-      ++since_peak_;
-    } else {
-      envelope_ *= decay_per_sample_;
+    current_window_max_ = std::max(current_window_max_, magnitude);
+    const double target = std::max(current_window_max_, previous_window_max_);
+    if (++window_count_ >= hold_samples_) {
+      previous_window_max_ = current_window_max_;
+      current_window_max_ = 0.0;
+      window_count_ = 0;
     }
+    envelope_ = target >= envelope_ ? target : target + (envelope_ - target) * decay_per_sample_;
     track_crossings(static_cast<double>(sample));
     ++sample_index_;
   }
@@ -68,7 +72,9 @@ class EnvelopeFollower {
   double decay_per_sample_ = 0.99;
   std::int64_t stale_samples_ = 400;
   double envelope_ = 0.0;
-  std::int64_t since_peak_ = 0;
+  std::int64_t window_count_ = 0;
+  double current_window_max_ = 0.0;
+  double previous_window_max_ = 0.0;
   std::int64_t sample_index_ = 0;
   std::int64_t last_rise_index_ = -1;
   double frequency_hz_ = 0.0;
