@@ -1,16 +1,35 @@
 #include "primitives/geometry/hit_test.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 namespace vimg {
 
-double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
+namespace {
+
+double distance_squared_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
   const double length_squared = dot(ab, ab);
-  if (length_squared == 0.0) return norm(p - a);
-  const double t = std::clamp(dot(p - a, ab) / length_squared, 0.0, 1.0);
-  return norm(p - (a + ab * t));
+  const double t = length_squared > 0.0 ? std::clamp(dot(p - a, ab) / length_squared, 0.0, 1.0) : 0.0;
+  const Vec2 d = p - (a + ab * t);
+  return dot(d, d);
+}
+
+// True if p lies within the tolerance of the edge a-b. The box test rejects most edges cheaply.
+bool on_edge(const Vec2& p, const Vec2& a, const Vec2& b) {
+  constexpr double tol = kBoundaryTolerance_m;
+  if (p.x < std::min(a.x, b.x) - tol || p.x > std::max(a.x, b.x) + tol || p.y < std::min(a.y, b.y) - tol ||
+      p.y > std::max(a.y, b.y) + tol) {
+    return false;
+  }
+  return distance_squared_to_segment(p, a, b) <= tol * tol;
+}
+
+}  // namespace
+
+double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  return std::sqrt(distance_squared_to_segment(p, a, b));
 }
 
 bool contains(const Disc& disc, const Vec2& p) {
@@ -19,7 +38,7 @@ bool contains(const Disc& disc, const Vec2& p) {
 }
 
 bool contains(const Capsule& capsule, const Vec2& p) {
-  return distance_to_segment(p, capsule.a, capsule.b) <= capsule.radius;
+  return distance_squared_to_segment(p, capsule.a, capsule.b) <= capsule.radius * capsule.radius;
 }
 
 bool contains(const Rect& rect, const Vec2& p) {
@@ -38,7 +57,7 @@ bool contains(const Polygon& polygon, const Vec2& p) {
   const std::size_t n = v.size();
   if (n < 3) return false;
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-    if (distance_to_segment(p, v[j], v[i]) <= kBoundaryTolerance_m) return true;
+    if (on_edge(p, v[j], v[i])) return true;
   }
   // Even-odd rule with the half-open convention on y, so a ray through a vertex counts once.
   bool inside = false;

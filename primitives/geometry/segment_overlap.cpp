@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "primitives/geometry/box2.hpp"
 #include "primitives/geometry/hit_test.hpp"
 
 namespace vimg {
@@ -78,8 +79,10 @@ bool polygon_crossings(const Polygon& polygon, const Vec2& p0, const Vec2& p1,
     out[count++] = t;
     return true;
   };
+  const Box2 step_box = Box2::of_segment(p0, p1).expanded(kBoundaryTolerance_m);
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
     const Vec2& a = v[j];
+    if (!step_box.intersects(Box2::of_segment(a, v[i]))) continue;  // cannot meet the step
     const Vec2 e = v[i] - a;
     const double e_length = norm(e);
     const Vec2 w = a - p0;
@@ -189,6 +192,7 @@ SegmentOverlap overlap_summary(const Polygon& polygon, const Vec2& p0, const Vec
     const Vec2 mid = lerp(p0, p1, 0.5);
     return combine_halves(overlap_summary(polygon, p0, mid), overlap_summary(polygon, mid, p1));
   }
+  const std::size_t crossings = count;
   t[count++] = 0.0;
   t[count++] = 1.0;
   std::sort(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(count));
@@ -206,7 +210,8 @@ SegmentOverlap overlap_summary(const Polygon& polygon, const Vec2& p0, const Vec
     out.last_exit = end;
     out.inside_fraction += end - begin;
   }
-  out.inside_at_end = contains(polygon, p1);
+  // Without crossings the segment is wholly in or out, so p1 shares the one piece's answer.
+  out.inside_at_end = crossings == 0 ? out.any : contains(polygon, p1);
   if (out.inside_at_end && out.any) out.last_exit = 1.0;
   return out;
 }

@@ -23,7 +23,7 @@ struct Vec2 {
 constexpr double dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
 // z component of the 3-D cross product: > 0 when b turns counter-clockwise from a.
 constexpr double cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
-inline double norm(const Vec2& a) { return std::hypot(a.x, a.y); }
+inline double norm(const Vec2& a) { return std::sqrt(dot(a, a)); }
 constexpr Vec2 lerp(const Vec2& a, const Vec2& b, double t) { return a + (b - a) * t; }
 constexpr Vec2 xy(const Vec3& v) { return {v.x, v.y}; }
 
