@@ -169,6 +169,25 @@ bool decode_text(ReadState* state, ErrorSink* sink) {
   return true;
 }
 
+// libpng allocates a chunk's declared length before reading it; a chunk can never be longer than
+// the bytes that follow it, so such lies are caught here, before any allocation.
+bool chunk_lengths_fit(std::string_view bytes, ErrorSink* sink) {
+  std::size_t pos = 8;
+  while (pos + 8 <= bytes.size()) {
+    const auto byte = [&](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])); };
+    const std::uint32_t length = byte(pos) << 24 | byte(pos + 1) << 16 | byte(pos + 2) << 8 | byte(pos + 3);
+    const std::size_t remaining = bytes.size() - pos - 8;
+    if (length > remaining || remaining - length < 4) {
+      std::snprintf(sink->message, sizeof sink->message, "the file ends too early (a chunk claims %u bytes)",
+                    static_cast<unsigned>(length));
+      return false;
+    }
+    if (bytes.compare(pos + 4, 4, "IEND") == 0) return true;
+    pos += 12 + static_cast<std::size_t>(length);
+  }
+  return true;  // libpng reports the missing end itself
+}
+
 }  // namespace
 
 bool looks_like_png(std::string_view bytes) {
@@ -196,6 +215,10 @@ PngText read_png_text(std::string_view bytes) {
   state.source.size = bytes.size();
   state.text = &text;
   ErrorSink sink;
+  if (!chunk_lengths_fit(bytes, &sink)) {
+    result.error = sink.message;
+    return result;
+  }
   const bool decoded = decode_text(&state, &sink);
   std::free(state.row);
   if (!decoded) {

@@ -261,6 +261,17 @@ TEST(Png, TruncatedPngNamesTheDamage) {
   EXPECT_NE(r.diagnostics[0].message.find("damaged PNG"), std::string::npos) << r.diagnostics[0].message;
 }
 
+TEST(Png, ChunkClaimingMoreBytesThanTheFileIsRejectedBeforeAllocating) {
+  test::TempDir dir("png_lie");
+  std::string png = save_png(canvas(20, 20), 1.0, dir);
+  // Make the first chunk after IHDR claim about 2 GB.
+  const std::size_t second_chunk = 8 + 12 + 13;
+  png[second_chunk] = '\x7f';
+  const PngText text = read_png_text(png);
+  EXPECT_EQ(text.error, "the file ends too early (a chunk claims 2130706441 bytes)");
+  EXPECT_FALSE(text.xml.has_value());
+}
+
 TEST(Png, BadScaleOrHugePictureIsAnErrorAndWritesNothing) {
   test::TempDir dir("png_limits");
   for (const double scale : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
