@@ -1,0 +1,172 @@
+// vimg-player: plays a vibrotactile image under the finger (or mouse) through a chosen output.
+#include <SDL.h>
+
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/vimg-player/image_view.hpp"
+#include "apps/vimg-player/player_args.hpp"
+#include "apps/vimg-player/status_overlay.hpp"
+#include "apps/vimg-player/touch_input.hpp"
+#include "hal/actuator_profile.hpp"
+#include "hal/output_spec.hpp"
+#include "hal/rest_on_exit.hpp"
+#include "player/realtime_renderer.hpp"
+#include "player/scene.hpp"
+#include "storage/image_io.hpp"
+
+namespace vimg::player_app {
+
+namespace {
+
+double display_px_per_mm(int display, bool& from_dpi) {
+  float dpi_diagonal = 0, dpi_horizontal = 0, dpi_vertical = 0;
+  if (SDL_GetDisplayDPI(display, &dpi_diagonal, &dpi_horizontal, &dpi_vertical) == 0 && dpi_horizontal > 10.0f) {
+    from_dpi = true;
+    return static_cast<double>(dpi_horizontal) / 25.4;
+  }
+  from_dpi = false;
+  return 96.0 / 25.4;  // the conventional desktop DPI when the display does not say
+}
+
+struct SdlSession {
+  SDL_Window* window = nullptr;
+  SDL_Renderer* renderer = nullptr;
+  ~SdlSession() {
+    if (renderer != nullptr) SDL_DestroyRenderer(renderer);
+    if (window != nullptr) SDL_DestroyWindow(window);
+    SDL_QuitSubSystem(SDL_INIT_VIDEO);
+  }
+};
+
+int run(const PlayerArgs& args) {
+  const LoadResult loaded = load_image_file(args.image_path);
+  for (const auto& diagnostic : loaded.diagnostics) std::fprintf(stderr, "%s\n", diagnostic.to_string().c_str());
+  if (!loaded.ok()) return 1;
+  const Image& image = *loaded.image;
+
+  ActuatorProfile profile;  // ideal, 175 Hz
+  if (args.actuator_path) {
+    const auto result = load_actuator_profile(*args.actuator_path);
+    for (const auto& error : result.errors) std::fprintf(stderr, "%s\n", error.c_str());
+    if (!result.profile) return 1;
+    profile = *result.profile;
+  }
+  const auto spec = parse_output_spec(args.output);
+  if (!spec.spec) {
+    std::fprintf(stderr, "vimg-player: %s\n", spec.error.c_str());
+    return 2;
+  }
+
+  SignalRestScope signals;
+  std::unique_ptr<Output> output;
+  try {
+    output = open_output(*spec.spec, profile);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "vimg-player: %s\n", error.what());
+    return 1;
+  }
+  RestGuard rest(output->sink());  // whatever happens below, the actuator ends at rest
+
+  SceneOptions scene_options;
+  scene_options.carrier_frequency_hz = profile.resonance_hz;
+  auto scene = compile_scene(image, scene_options);
+
+  if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
+    std::fprintf(stderr, "vimg-player: cannot start video: %s\n", SDL_GetError());
+    return 1;
+  }
+  SdlSession sdl;
+  const Uint32 flags = args.window_size ? SDL_WINDOW_SHOWN : (SDL_WINDOW_SHOWN | SDL_WINDOW_FULLSCREEN_DESKTOP);
+  const auto [width, height] = args.window_size.value_or(std::pair{1024, 768});
+  sdl.window = SDL_CreateWindow("vimg-player", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height, flags);
+  if (sdl.window == nullptr) {
+    std::fprintf(stderr, "vimg-player: cannot open a window (%s): %s\n", SDL_GetCurrentVideoDriver(), SDL_GetError());
+    return 1;
+  }
+  sdl.renderer = SDL_CreateRenderer(sdl.window, -1, SDL_RENDERER_PRESENTVSYNC);
+  if (sdl.renderer == nullptr) sdl.renderer = SDL_CreateRenderer(sdl.window, -1, SDL_RENDERER_SOFTWARE);
+  if (sdl.renderer == nullptr) {
+    std::fprintf(stderr, "vimg-player: cannot draw: %s\n", SDL_GetError());
+    return 1;
+  }
+
+  bool scale_from_dpi = false;
+  const double px_per_mm = args.px_per_mm.value_or(display_px_per_mm(SDL_GetWindowDisplayIndex(sdl.window), scale_from_dpi));
+  int window_width = 0, window_height = 0;
+  SDL_GetRendererOutputSize(sdl.renderer, &window_width, &window_height);
+  ViewTransform view;
+  view.px_per_mm = px_per_mm;
+  view.origin_x_px = (window_width - image.width_mm * px_per_mm) / 2.0;
+  view.origin_y_px = (window_height - image.height_mm * px_per_mm) / 2.0;
+
+  RealtimeOptions realtime;
+  realtime.sample_rate_hz = args.rate_hz;
+  RealtimeRenderer renderer(output->sink(), realtime);
+  renderer.set_scene(scene);
+  if (auto error = renderer.start()) {
+    std::fprintf(stderr, "vimg-player: %s\n", error->c_str());
+    return 1;
+  }
+
+  StatusOverlay overlay(output->description(),
+                        args.px_per_mm ? "--px-per-mm" : (scale_from_dpi ? "display dpi" : "96 dpi assumed"), px_per_mm);
+  TouchInput input(view, window_width, window_height);
+  bool quit = false;
+  while (!quit && !rest_requested()) {
+    SDL_Event event;
+    while (SDL_PollEvent(&event)) {
+      if (event.type == SDL_QUIT) quit = true;
+      if (event.type == SDL_KEYDOWN && (event.key.keysym.sym == SDLK_ESCAPE || event.key.keysym.sym == SDLK_q)) {
+        quit = true;
+      }
+      for (const TouchEvent& touch : input.translate(event)) {
+        if (!renderer.push_event(touch)) overlay.note("input queue full: event dropped");
+      }
+    }
+    for (const auto& message : output->take_messages()) {
+      std::fprintf(stderr, "vimg-player: %s\n", message.c_str());
+      overlay.note(message);
+    }
+    SDL_SetRenderDrawColor(sdl.renderer, 30, 30, 34, 255);
+    SDL_RenderClear(sdl.renderer);
+    draw_image(sdl.renderer, image, view);
+    input.draw_fingers(sdl.renderer);
+    overlay.draw(sdl.renderer, renderer.stats(), output->underruns());
+    SDL_RenderPresent(sdl.renderer);
+    SDL_Delay(10);
+  }
+  renderer.stop();  // stops the thread and puts the output to rest
+  const LoopStats stats = renderer.stats();
+  std::printf("vimg-player: %s; %llu blocks at %.0f Hz, jitter p99 %.3f ms, max %.3f ms, %llu underruns%s\n",
+              output->description().c_str(), static_cast<unsigned long long>(stats.blocks), stats.measured_rate_hz,
+              stats.jitter_p99_s * 1e3, stats.jitter_max_s * 1e3,
+              static_cast<unsigned long long>(output->underruns()),
+              rest_requested() ? "; stopped by a signal" : "");
+  return 0;
+}
+
+}  // namespace
+}  // namespace vimg::player_app
+
+int main(int argc, char** argv) {
+  using namespace vimg::player_app;
+  const ArgsResult parsed = parse_player_args(std::vector<std::string>(argv + 1, argv + argc));
+  if (!parsed.args) {
+    if (parsed.error.empty()) {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+    std::fprintf(stderr, "vimg-player: %s\n%s", parsed.error.c_str(), kUsage);
+    return 2;
+  }
+  try {
+    return run(*parsed.args);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "vimg-player: %s\n", error.what());
+    return 1;
+  }
+}
