@@ -9,6 +9,8 @@
 #include <string_view>
 
 #include "cli/command.hpp"
+#include "hal/actuator_profile.hpp"
+#include "hal/drv2605l_trace_sink.hpp"
 #include "player/drive_sinks.hpp"
 #include "player/gesture.hpp"
 #include "player/offline_render.hpp"
@@ -19,7 +21,9 @@ namespace vimg::cli {
 
 namespace {
 
-constexpr std::string_view kRenderUsage = "vimg render IMAGE --gesture G.csv --out OUT.(wav|csv) [--rate HZ]";
+constexpr std::string_view kRenderUsage =
+    "vimg render IMAGE --gesture G.csv --out OUT.(wav|csv) [--rate HZ] [--actuator PROFILE] "
+    "[--register-trace FILE.csv]";
 
 int usage_error(const std::string& problem) {
   std::fprintf(stderr, "vimg render: %s\nusage: %.*s\n", problem.c_str(), static_cast<int>(kRenderUsage.size()),
@@ -39,6 +43,8 @@ struct RenderArgs {
   std::string out;
   double rate_hz = 8000.0;
   // Options of the hardware layer (actuator profile) go in the block marked below.
+  std::string actuator;        // profile file; empty: the ideal actuator
+  std::string register_trace;  // DRV2605L register traffic CSV; needs a drv2605l profile
 };
 
 // Parses the arguments; returns an exit code on a usage error.
@@ -66,6 +72,13 @@ std::optional<int> parse_render_args(std::span<const std::string_view> args, Ren
       out.rate_hz = rate;
     }
     // ---- hardware layer options (e.g. --actuator PROFILE) ----
+    else if (a == "--actuator") {
+      if (!value(v)) return usage_error("--actuator needs a profile file");
+      out.actuator = std::string(v);
+    } else if (a == "--register-trace") {
+      if (!value(v)) return usage_error("--register-trace needs a file");
+      out.register_trace = std::string(v);
+    }
     // ---- end of hardware layer options ----
     else if (a.size() > 1 && a.front() == '-') {
       return usage_error("unknown option '" + std::string(a) + "'");
@@ -80,6 +93,8 @@ std::optional<int> parse_render_args(std::span<const std::string_view> args, Ren
   if (out.out.empty()) return usage_error("missing --out OUT.wav or OUT.csv");
   const std::string ext = lower_extension(out.out);
   if (ext != ".wav" && ext != ".csv") return usage_error("--out must end in .wav or .csv: '" + out.out + "'");
+  if (!out.register_trace.empty() && out.actuator.empty())
+    return usage_error("--register-trace needs --actuator with a drv2605l profile");
   return std::nullopt;
 }
 
@@ -97,7 +112,16 @@ int run_render(std::span<const std::string_view> args) {
   for (const std::string& e : gesture.errors) std::fprintf(stderr, "%s\n", e.c_str());
   if (!gesture.ok()) return kExitFailure;
 
-  const auto scene = compile_scene(*loaded.image);
+  ActuatorProfile profile;  // the ideal actuator: resonance 175 Hz as the DOT carrier
+  if (!a.actuator.empty()) {
+    const ProfileLoadResult loaded_profile = load_actuator_profile(a.actuator);
+    for (const std::string& e : loaded_profile.errors) std::fprintf(stderr, "%s\n", e.c_str());
+    if (!loaded_profile.profile) return kExitFailure;
+    profile = *loaded_profile.profile;
+  }
+  SceneOptions scene_options;
+  scene_options.carrier_frequency_hz = profile.resonance_hz;
+  const auto scene = compile_scene(*loaded.image, scene_options);
   std::unique_ptr<FileSink> sink;
   if (lower_extension(a.out) == ".wav") {
     sink = std::make_unique<WavSink>(a.out);
@@ -106,7 +130,21 @@ int run_render(std::span<const std::string_view> args) {
   }
   OfflineRenderOptions options;
   options.sample_rate_hz = a.rate_hz;
-  const OfflineRenderResult r = render_gesture(*scene, *gesture.gesture, *sink, options);
+  std::unique_ptr<Drv2605lTraceSink> trace;
+  if (!a.register_trace.empty()) {
+    try {
+      trace = std::make_unique<Drv2605lTraceSink>(*sink, profile, a.register_trace);
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "vimg render: %s: %s\n", a.actuator.c_str(), e.what());
+      return kExitFailure;
+    }
+  }
+  const OfflineRenderResult r =
+      render_gesture(*scene, *gesture.gesture, trace ? static_cast<DriveSink&>(*trace) : *sink, options);
+  if (trace && trace->error()) {
+    std::fprintf(stderr, "vimg render: %s\n", trace->error()->c_str());
+    return kExitFailure;
+  }
   if (sink->error()) {
     std::fprintf(stderr, "vimg render: %s\n", sink->error()->c_str());
     return kExitFailure;

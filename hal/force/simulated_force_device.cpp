@@ -27,10 +27,7 @@ Vec3 SimulatedForceDevice::hand_position_m(double time_s) const {
 }
 
 bool SimulatedForceDevice::read(double time_s, ProbeSample& sample) {
-  if (fail_read_) {
-    fail_read_ = false;
-    return false;
-  }
+  if (fail_read_.exchange(false)) return false;
   const double span = time_s - time_s_;
   if (span > 0.0) {
     const int steps = std::max(1, static_cast<int>(std::ceil(span / hand_.max_substep_s)));
@@ -56,8 +53,7 @@ bool SimulatedForceDevice::read(double time_s, ProbeSample& sample) {
 }
 
 bool SimulatedForceDevice::write_force(const Vec3& force_N) {
-  if (fail_write_) {
-    fail_write_ = false;
+  if (fail_write_.exchange(false)) {
     force_N_ = {};
     return false;
   }

@@ -6,6 +6,7 @@
 // read(time_s) integrates up to time_s in sub-steps (semi-implicit Euler). It also accounts the
 // work the rendered force does on the probe, W = integral F . dx: a passive virtual environment
 // never delivers net energy, so W stays <= 0 (up to what it stores and gives back).
+#include <atomic>
 #include <vector>
 
 #include "hal/force/force_device.hpp"
@@ -37,7 +38,7 @@ class SimulatedForceDevice final : public ForceDevice {
   Vec3 hand_position_m(double time_s) const;
   const Vec3& force_N() const { return force_N_; }
   double environment_work_J() const { return work_J_; }
-  // Test hooks: make the next read or write fail.
+  // Test hooks: make the next read or write fail (callable from another thread).
   void fail_next_read() { fail_read_ = true; }
   void fail_next_write() { fail_write_ = true; }
   int writes() const { return writes_; }
@@ -51,8 +52,8 @@ class SimulatedForceDevice final : public ForceDevice {
   Vec3 velocity_m_per_s_;
   Vec3 force_N_;
   double work_J_ = 0.0;
-  bool fail_read_ = false;
-  bool fail_write_ = false;
+  std::atomic<bool> fail_read_{false};
+  std::atomic<bool> fail_write_{false};
   int writes_ = 0;
 };
 
