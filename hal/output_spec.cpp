@@ -1,6 +1,8 @@
 #include "hal/output_spec.hpp"
 
 #include <charconv>
+#include <cstdio>
+#include <stdexcept>
 
 #include "hal/bos1901_driver.hpp"
 #include "hal/clock.hpp"
@@ -126,6 +128,10 @@ ActuatorProfile default_lra_profile() {
   return profile;
 }
 
+std::string Output::calibrate() {
+  throw std::runtime_error(description() + ": this output has no calibration");
+}
+
 namespace {
 
 std::vector<std::string> drain(FaultLog& log, const std::string& path) {
@@ -171,7 +177,8 @@ class WavOut final : public Output {
 
 class Drv2605lOut final : public Output {
  public:
-  Drv2605lOut(const Drv2605lOutput& spec, const ActuatorProfile& given) : bus_(spec.bus) {
+  Drv2605lOut(const Drv2605lOutput& spec, const ActuatorProfile& given)
+      : bus_(spec.bus), calibration_file_(spec.calibration_file) {
     ActuatorProfile profile = given.type == ActuatorType::lra ? given : default_lra_profile();
     profile.address = spec.address;
     if (spec.enable_pin) {
@@ -192,10 +199,19 @@ class Drv2605lOut final : public Output {
     }
     return messages;
   }
-  Drv2605lDriver& driver() { return *driver_; }
+  std::string calibrate() override {
+    const Drv2605lCalibration result = driver_->calibrate();
+    char text[200];
+    std::snprintf(text, sizeof text, "A_CAL_COMP=0x%02X A_CAL_BEMF=0x%02X BEMF_GAIN=%u", result.a_cal_comp,
+                  result.a_cal_bemf, static_cast<unsigned>(result.bemf_gain));
+    return bus_.path() + ": auto-calibration done: " + text +
+           (calibration_file_.empty() ? std::string("; not stored (add ,calibration=FILE to --output)")
+                                      : "; stored in " + calibration_file_);
+  }
 
  private:
   LinuxI2cBus bus_;
+  std::string calibration_file_;
   SystemClock clock_;
   std::unique_ptr<GpiodOutput> pin_;
   std::unique_ptr<Drv2605lDriver> driver_;

@@ -54,6 +54,9 @@ class Output {
   // Fault messages since the last call (from the driver's FaultLog), for the status line.
   virtual std::vector<std::string> take_messages() { return {}; }
   virtual std::uint64_t underruns() const { return 0; }
+  // Runs the actuator's calibration (DRV2605L auto-calibration) and says what it found and where it
+  // was stored. Throws std::runtime_error for outputs without one.
+  virtual std::string calibrate();
 };
 
 // Opens the devices. `profile` gives the actuator (the built-in 175 Hz LRA when it has none for a

@@ -42,19 +42,51 @@ struct SdlSession {
   }
 };
 
+int calibrate(const ActuatorProfile& profile, const OutputSpec& spec) {
+  SignalRestScope signals;
+  try {
+    auto output = open_output(spec, profile);
+    RestGuard rest(output->sink());
+    std::printf("%s\n", output->calibrate().c_str());
+    return 0;
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "vimg-player: %s\n", error.what());
+    return 1;
+  }
+}
+
+ActuatorProfile load_profile_or_ideal(const PlayerArgs& args, bool& ok) {
+  ok = true;
+  ActuatorProfile profile;  // ideal, 175 Hz
+  if (args.actuator_path) {
+    const auto result = load_actuator_profile(*args.actuator_path);
+    for (const auto& error : result.errors) std::fprintf(stderr, "%s\n", error.c_str());
+    ok = result.profile.has_value();
+    if (ok) profile = *result.profile;
+  }
+  return profile;
+}
+
 int run(const PlayerArgs& args) {
+  if (args.calibrate) {
+    bool ok = false;
+    const ActuatorProfile profile = load_profile_or_ideal(args, ok);
+    const auto spec = parse_output_spec(args.output);
+    if (!ok) return 1;
+    if (!spec.spec) {
+      std::fprintf(stderr, "vimg-player: %s\n", spec.error.c_str());
+      return 2;
+    }
+    return calibrate(profile, *spec.spec);
+  }
   const LoadResult loaded = load_image_file(args.image_path);
   for (const auto& diagnostic : loaded.diagnostics) std::fprintf(stderr, "%s\n", diagnostic.to_string().c_str());
   if (!loaded.ok()) return 1;
   const Image& image = *loaded.image;
 
-  ActuatorProfile profile;  // ideal, 175 Hz
-  if (args.actuator_path) {
-    const auto result = load_actuator_profile(*args.actuator_path);
-    for (const auto& error : result.errors) std::fprintf(stderr, "%s\n", error.c_str());
-    if (!result.profile) return 1;
-    profile = *result.profile;
-  }
+  bool profile_ok = false;
+  const ActuatorProfile profile = load_profile_or_ideal(args, profile_ok);
+  if (!profile_ok) return 1;
   const auto spec = parse_output_spec(args.output);
   if (!spec.spec) {
     std::fprintf(stderr, "vimg-player: %s\n", spec.error.c_str());

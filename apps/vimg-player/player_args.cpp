@@ -25,6 +25,8 @@ ArgsResult parse_player_args(const std::vector<std::string>& arguments) {
     std::string text;
     if (argument == "--help" || argument == "-h") {
       return {std::nullopt, ""};
+    } else if (argument == "--calibrate") {
+      args.calibrate = true;
     } else if (argument == "--output") {
       if (!value(args.output)) return {std::nullopt, "--output needs a value"};
     } else if (argument == "--actuator") {
@@ -54,7 +56,7 @@ ArgsResult parse_player_args(const std::vector<std::string>& arguments) {
       return {std::nullopt, "only one IMAGE, not also " + argument};
     }
   }
-  if (args.image_path.empty()) {
+  if (args.image_path.empty() && !args.calibrate) {
     return {std::nullopt, "needs an IMAGE"};
   }
   return {args, ""};
