@@ -215,7 +215,7 @@ void EditorApp::draw_element(ImDrawList* dl, const Element& element, bool highli
     if ((bounds->width_mm()) * ppm > 60 && bounds->height_mm() * ppm > 24) {
       char label[48];
       static constexpr const char* kPatterns[] = {"sine", "square", "triangle"};
-      std::snprintf(label, sizeof label, "%s  \xce\xbb %.3g mm", kPatterns[static_cast<int>(s->pattern)], s->period_mm);
+      std::snprintf(label, sizeof label, "%s, period %.3g mm", kPatterns[static_cast<int>(s->pattern)], s->period_mm);
       const Point2Px tl = view_.to_px({bounds->x0_mm, bounds->y0_mm});
       dl->AddText(ImVec2(tl.x + 4, tl.y + 2), with_alpha(col, 255), label);
     }

@@ -1,5 +1,6 @@
 #include "editor/drive_tap.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -11,6 +12,8 @@ void DriveTap::open(double sample_rate_hz) {
   sample_rate_hz_.store(sample_rate_hz, std::memory_order_release);
   first_block_time_s_.store(std::numeric_limits<double>::quiet_NaN(), std::memory_order_release);
   was_silent_ = true;
+  segment_count_.store(0, std::memory_order_release);
+  samples_total_ = 0;
   output_.open(sample_rate_hz);
 }
 
@@ -18,6 +21,15 @@ void DriveTap::write(std::span<const float> drive, double block_start_time_s) {
   if (std::isnan(first_block_time_s_.load(std::memory_order_relaxed))) {
     first_block_time_s_.store(block_start_time_s, std::memory_order_release);
   }
+  const double rate = sample_rate_hz_.load(std::memory_order_relaxed);
+  const std::size_t segments = segment_count_.load(std::memory_order_relaxed);
+  if ((segments == 0 || std::abs(block_start_time_s - next_block_time_s_) > 0.5 / rate) && segments < kMaxSegments) {
+    segment_time_s_[segments].store(block_start_time_s, std::memory_order_relaxed);
+    segment_sample_[segments].store(samples_total_, std::memory_order_relaxed);
+    segment_count_.store(segments + 1, std::memory_order_release);
+  }
+  samples_total_ += drive.size();
+  next_block_time_s_ = block_start_time_s + static_cast<double>(drive.size()) / rate;
   bool silent = true;
   std::size_t w = written_.load(std::memory_order_relaxed);
   for (float v : drive) {
@@ -52,6 +64,24 @@ std::vector<double> DriveTap::latencies_s() const {
   const std::size_t n = latency_count_.load(std::memory_order_acquire);
   std::vector<double> out(n);
   for (std::size_t i = 0; i < n; ++i) out[i] = latencies_[i].load(std::memory_order_relaxed);
+  return out;
+}
+
+}  // namespace vimg::editor
+
+namespace vimg::editor {
+
+double DriveTap::output_time_s(double t) const {
+  const std::size_t n = segment_count_.load(std::memory_order_acquire);
+  const double rate = sample_rate_hz();
+  if (n == 0 || rate <= 0) return 0.0;
+  std::size_t i = 0;
+  while (i + 1 < n && segment_time_s_[i + 1].load(std::memory_order_relaxed) <= t) ++i;
+  double out = static_cast<double>(segment_sample_[i].load(std::memory_order_relaxed)) / rate +
+               (t - segment_time_s_[i].load(std::memory_order_relaxed));
+  if (i + 1 < n) {
+    out = std::min(out, static_cast<double>(segment_sample_[i + 1].load(std::memory_order_relaxed)) / rate);
+  }
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -33,7 +34,13 @@ class DriveTap final : public DriveSink {
   // silence, in seconds; at most kMaxLatencies are kept.
   std::vector<double> latencies_s() const;
 
+  // Maps a time on the renderer's clock to seconds into the output (0 = the first sample). The
+  // renderer skips blocks when it falls far behind, so the two differ by the skipped time; this
+  // is exact for the samples written so far. Times inside a skipped gap map to its end.
+  double output_time_s(double renderer_time_s) const;
+
   static constexpr std::size_t kRingSize = 8192;
+  static constexpr std::size_t kMaxSegments = 4096;
   static constexpr std::size_t kMaxLatencies = 1024;
 
  private:
@@ -45,6 +52,12 @@ class DriveTap final : public DriveSink {
   std::atomic<double> last_event_time_s_{0.0};
   bool was_silent_ = true;  // render thread only
   std::array<std::atomic<double>, kMaxLatencies> latencies_{};
+  // Runs of contiguous blocks: where each starts on the renderer clock and in samples.
+  std::array<std::atomic<double>, kMaxSegments> segment_time_s_{};
+  std::array<std::atomic<std::uint64_t>, kMaxSegments> segment_sample_{};
+  std::atomic<std::size_t> segment_count_{0};
+  double next_block_time_s_ = 0.0;  // render thread only
+  std::uint64_t samples_total_ = 0;  // render thread only
   std::atomic<std::size_t> latency_count_{0};
 };
 

@@ -115,11 +115,11 @@ void EditorApp::shutdown_window() {
 
 int EditorApp::run() {
   if (!init_window()) return 1;
+  offer_recovery();  // first: opening the file must not drop the work of a crashed session
   if (!options_.file.empty() && !open_file(options_.file)) {
     std::fprintf(stderr, "%s\n", error_message_.c_str());
   }
   refresh_library();
-  offer_recovery();
   if (options_.play_at_start) set_play_mode(true);
 
   std::vector<double> frame_times_s;
@@ -129,10 +129,15 @@ int EditorApp::run() {
     const double t0 = monotonic_time_s();
     frame();
     ++frames;
+    // Key releases held back from the frame that saw the press (see dispatch()).
+    keys_pressed_this_frame_.clear();
+    std::vector<SDL_Event> held = std::move(held_events_);
+    held_events_.clear();
+    for (const SDL_Event& e : held) dispatch(e);
     if (options_.benchmark_frames > 0) {
       frame_times_s.push_back(monotonic_time_s() - t0);
       SDL_Event e;
-      while (SDL_PollEvent(&e)) handle_event(e);
+      while (SDL_PollEvent(&e)) dispatch(e);
       if (frames >= options_.benchmark_frames) break;
       continue;
     }
@@ -144,8 +149,8 @@ int EditorApp::run() {
       SDL_Event e;
       const int wait_ms = std::max(1, static_cast<int>((next_frame_s - now) * 1000.0));
       if (SDL_WaitEventTimeout(&e, wait_ms)) {
-        handle_event(e);
-        while (SDL_PollEvent(&e)) handle_event(e);
+        dispatch(e);
+        while (SDL_PollEvent(&e)) dispatch(e);
       }
     }
   }
@@ -166,8 +171,28 @@ int EditorApp::run() {
   return 0;
 }
 
+void EditorApp::dispatch(const SDL_Event& event) {
+  // Dear ImGui 1.86 samples key state once per frame: a press and its release in the same frame
+  // would be lost (fast typists, scripted input). The release waits for the next frame.
+  if (event.type == SDL_KEYDOWN) keys_pressed_this_frame_.push_back(event.key.keysym.scancode);
+  if (event.type == SDL_KEYUP &&
+      std::find(keys_pressed_this_frame_.begin(), keys_pressed_this_frame_.end(), event.key.keysym.scancode) !=
+          keys_pressed_this_frame_.end()) {
+    held_events_.push_back(event);
+    return;
+  }
+  handle_event(event);
+}
+
 void EditorApp::handle_event(const SDL_Event& event) {
   ImGui_ImplSDL2_ProcessEvent(&event);
+  if (event.type == SDL_KEYDOWN || event.type == SDL_KEYUP) {
+    // The modifiers as of this event (the backend reads SDL's current state, which may be later).
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = (event.key.keysym.mod & KMOD_CTRL) != 0;
+    io.KeyShift = (event.key.keysym.mod & KMOD_SHIFT) != 0;
+    io.KeyAlt = (event.key.keysym.mod & KMOD_ALT) != 0;
+  }
   if (play_mode_) handle_play_input(event);
   switch (event.type) {
     case SDL_QUIT: request(PendingAction::quit); break;
@@ -188,7 +213,7 @@ void EditorApp::handle_play_input(const SDL_Event& event) {
     return x >= canvas_x_ && y >= canvas_y_ && x < canvas_x_ + canvas_w_ && y < canvas_y_ + canvas_h_;
   };
   auto mm = [&](float x, float y) { return view_.to_mm(Point2Px{x, y}); };
-  const bool popup = ImGui::GetCurrentContext() && ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
+  const bool popup = any_popup_open_;
   switch (event.type) {
     case SDL_MOUSEBUTTONDOWN:
       if (event.button.which == SDL_TOUCH_MOUSEID || event.button.button != SDL_BUTTON_LEFT || popup) break;
@@ -241,7 +266,7 @@ void EditorApp::handle_shortcut(const SDL_KeyboardEvent& key) {
   const bool ctrl = (key.keysym.mod & KMOD_CTRL) != 0;
   const bool shift = (key.keysym.mod & KMOD_SHIFT) != 0;
   const bool alt = (key.keysym.mod & KMOD_ALT) != 0;
-  if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;  // dialogs take the keyboard
+  if (any_popup_open_) return;  // dialogs take the keyboard
   if (k == SDLK_F5 || k == SDLK_TAB) {
     set_play_mode(!play_mode_);
     return;
@@ -349,6 +374,7 @@ void EditorApp::frame() {
   ImGui::End();
 
   draw_dialogs();
+  any_popup_open_ = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
 
   ImGui::Render();
   SDL_SetRenderDrawColor(renderer_, 30, 30, 34, 255);
@@ -467,7 +493,7 @@ void EditorApp::perform(PendingAction action, const std::string& path) {
       doc_.reset(new_image());
       document_path_.clear();
       load_diagnostics_.clear();
-      recovery_.discard();
+      if (!recovery_prompt_opening_ && !recovery_prompt_active_) recovery_.discard();
       status_ = "new document";
       break;
     case PendingAction::open_file: open_file(path); break;
@@ -488,7 +514,7 @@ bool EditorApp::open_file(const std::string& path) {
   document_path_ = path;
   load_diagnostics_ = result.diagnostics;
   recent_.add(path);
-  recovery_.discard();
+  if (!recovery_prompt_opening_ && !recovery_prompt_active_) recovery_.discard();
   status_ = "opened " + path;
   return true;
 }
@@ -554,7 +580,7 @@ void EditorApp::set_play_mode(bool on) {
     }
   }
   if (!options_.record_gesture.empty() && play_->recording()) {
-    if (auto error = play_->recorder().save(options_.record_gesture)) report_error(*error);
+    if (auto error = play_->recorded_gesture().save(options_.record_gesture)) report_error(*error);
   }
 }
 
@@ -565,7 +591,7 @@ void EditorApp::report_error(std::string message) {
 }
 
 void EditorApp::autosave_if_due() {
-  if (recovery_prompt_opening_ || ImGui::IsPopupOpen("Recover unsaved work?")) return;
+  if (recovery_prompt_opening_ || recovery_prompt_active_) return;  // the user decides first
   const double now = monotonic_time_s();
   if (!doc_.dirty() || doc_.in_gesture()) return;
   if (doc_.change_count() == autosaved_change_ || now - last_autosave_s_ < options_.autosave_interval_s) return;
@@ -619,6 +645,7 @@ void EditorApp::draw_dialogs() {
   if (recovery_prompt_opening_ && !ImGui::IsPopupOpen("Problem")) {
     ImGui::OpenPopup("Recover unsaved work?");
     recovery_prompt_opening_ = false;
+    recovery_prompt_active_ = true;
   }
   if (unsaved_prompt_opening_) {
     ImGui::OpenPopup("Unsaved changes");
@@ -660,9 +687,11 @@ void EditorApp::draw_dialogs() {
         error_message_ = join_diagnostics(result.diagnostics);
         error_opening_ = true;
       }
+      recovery_prompt_active_ = false;
       ImGui::CloseCurrentPopup();
     } else if (discard) {
       recovery_.discard();
+      recovery_prompt_active_ = false;
       ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
@@ -728,7 +757,7 @@ void EditorApp::draw_dialogs() {
       } else if (path_prompt_ == PathPrompt::save_as) {
         if (save_to(path, true) && pending_ != PendingAction::none) perform(pending_, pending_path_);
       } else if (play_) {
-        if (auto error = play_->recorder().save(path)) {
+        if (auto error = play_->recorded_gesture().save(path)) {
           report_error(*error);
         } else {
           status_ = "gesture saved to " + path;

@@ -35,6 +35,7 @@ class EditorApp {
   // --- editor_app.cpp: loop, input, files, dialogs
   bool init_window();
   void shutdown_window();
+  void dispatch(const SDL_Event& event);
   void handle_event(const SDL_Event& event);
   void handle_shortcut(const SDL_KeyboardEvent& key);
   void handle_play_input(const SDL_Event& event);
@@ -131,7 +132,10 @@ class EditorApp {
   std::string pending_path_;
   bool unsaved_prompt_opening_ = false;
   bool recovery_prompt_opening_ = false;
-  bool recovery_offered_ = false;
+  bool recovery_prompt_active_ = false;
+  bool any_popup_open_ = false;
+  std::vector<SDL_Scancode> keys_pressed_this_frame_;
+  std::vector<SDL_Event> held_events_;  // as of the last frame; input between frames reads it
   std::string error_message_;
   bool error_opening_ = false;
   std::string status_;

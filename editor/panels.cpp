@@ -22,24 +22,39 @@ constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFl
                                          ImGuiWindowFlags_NoBringToFrontOnFocus;
 constexpr const char* kLibraryPayload = "VIMG_LIBRARY_FILE";
 
+struct FieldResult {
+  bool changed = false;
+  bool activated = false;
+  bool deactivated = false;
+  ImVec2 min;
+  ImVec2 size;
+};
+
 // A number field with its unit and valid range; the value is clamped into the range. `open_min`
-// and `open_max` mark exclusive bounds (the value stays just inside). Returns true on a change.
-bool number_field(const char* label, double& value, const char* unit, double min, double max, bool open_min = false,
-                  bool open_max = false) {
+// and `open_max` mark exclusive bounds (the value stays just inside).
+FieldResult number_field(const char* label, double& value, const char* unit, double min, double max,
+                         bool open_min = false, bool open_max = false) {
+  FieldResult r;
   double v = value;
-  char tip[96];
-  std::snprintf(tip, sizeof tip, "%s%g, %g%s %s", open_min ? "(" : "[", min, max, open_max ? ")" : "]", unit);
+  char range[96];
+  std::snprintf(range, sizeof range, "%s%g, %g%s", open_min ? "(" : "[", min, max, open_max ? ")" : "]");
   ImGui::SetNextItemWidth(120);
   const bool edited = ImGui::InputDouble(label, &v, 0.0, 0.0, "%.6g");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("range %s", tip);
+  r.activated = ImGui::IsItemActivated();
+  r.deactivated = ImGui::IsItemDeactivated();
+  r.min = ImGui::GetItemRectMin();
+  r.size = ImGui::GetItemRectSize();
+  const bool hovered = ImGui::IsItemHovered();
   ImGui::SameLine();
-  ImGui::TextDisabled("%s %s", unit, tip);
-  if (!edited || !std::isfinite(v)) return false;
+  ImGui::TextDisabled("%s %s", unit, range);
+  if (hovered) ImGui::SetTooltip("valid range %s %s", range, unit);
+  if (!edited || !std::isfinite(v)) return r;
   const double eps = 1e-9 * std::max(1.0, std::abs(max - min));
   v = std::clamp(v, open_min ? min + eps : min, open_max ? max - eps : max);
-  if (v == value) return false;
+  if (v == value) return r;
   value = v;
-  return true;
+  r.changed = true;
+  return r;
 }
 
 }  // namespace
@@ -150,10 +165,11 @@ void EditorApp::draw_element_properties(const std::string& id) {
   bool changed = false;
   auto field = [&](const char* label, double& v, const char* unit, double min, double max, bool open_min = false,
                    bool open_max = false) {
-    changed |= number_field(label, v, unit, min, max, open_min, open_max);
-    track_widget_gesture();
-    print_layout(label, ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
-                 ImGui::GetItemRectSize().y);
+    const FieldResult r = number_field(label, v, unit, min, max, open_min, open_max);
+    changed |= r.changed;
+    if (r.activated) doc_.begin_gesture();
+    if (r.deactivated) doc_.end_gesture();
+    print_layout(label, r.min.x, r.min.y, r.size.x, r.size.y);
   };
   // Wherever a coordinate may go: the document's size bound of the spec, with room off the canvas.
   constexpr double kCoord = 10000.0;
@@ -290,10 +306,11 @@ void EditorApp::draw_document_properties() {
   settings.children.clear();
   bool changed = false;
   auto field = [&](const char* label, double& v, const char* unit, double min, double max, bool open_min = false) {
-    changed |= number_field(label, v, unit, min, max, open_min);
-    track_widget_gesture();
-    print_layout(label, ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
-                 ImGui::GetItemRectSize().y);
+    const FieldResult r = number_field(label, v, unit, min, max, open_min);
+    changed |= r.changed;
+    if (r.activated) doc_.begin_gesture();
+    if (r.deactivated) doc_.end_gesture();
+    print_layout(label, r.min.x, r.min.y, r.size.x, r.size.y);
   };
   ImGui::Text("Document (select an element to edit it)");
   field("width##doc", settings.width_mm, "mm", 0, 10000, true);
@@ -382,8 +399,9 @@ void EditorApp::draw_scope_panel(float x, float y, float w, float h) {
   ImGui::Text("last 100 ms at %.0f Hz | loop %.0f Hz, jitter p99 %.2f ms | overruns %llu | contacts %llu", rate,
               stats.measured_rate_hz, stats.jitter_p99_s * 1e3, static_cast<unsigned long long>(stats.overruns),
               static_cast<unsigned long long>(stats.active_contacts));
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
   ImGui::PlotLines("##drive", scope_samples_.data(), static_cast<int>(scope_samples_.size()), 0, nullptr, -1.0f, 1.0f,
-                   ImVec2(-1, -1));
+                   ImVec2(avail.x, std::max(20.0f, avail.y)));
   ImGui::End();
 }
 

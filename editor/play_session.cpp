@@ -73,17 +73,24 @@ void PlaySession::touch(int finger, TouchPhase phase, double x_mm, double y_mm, 
     if (trail_.size() > kMaxTrail) trail_.pop_front();
   }
   if (recording_) {
-    double origin = tap_->first_block_time_s();
-    if (std::isnan(origin)) origin = start_time_s_;
     const GesturePhase gp = phase == TouchPhase::down ? GesturePhase::down
                             : phase == TouchPhase::up ? GesturePhase::up
                                                       : GesturePhase::move;
-    recorder_.add(GestureSample{time_s - origin, finger, x_mm, y_mm, std::nullopt, gp});
+    recorder_.add(GestureSample{time_s, finger, x_mm, y_mm, std::nullopt, gp});
   }
 }
 
 void PlaySession::forget_trail_older_than(double time_s) {
   while (!trail_.empty() && trail_.front().time_s < time_s) trail_.pop_front();
+}
+
+GestureRecorder PlaySession::recorded_gesture() const {
+  GestureRecorder out;
+  for (GestureSample s : recorder_.samples()) {
+    s.time_s = tap_ ? tap_->output_time_s(s.time_s) : s.time_s - start_time_s_;
+    out.add(s);
+  }
+  return out;
 }
 
 void PlaySession::set_recording(bool on) {

@@ -49,10 +49,12 @@ class PlaySession {
   const DriveTap* tap() const { return tap_.get(); }
   LoopStats stats() const { return renderer_ ? renderer_->stats() : LoopStats{}; }
 
-  // Gesture recording: times are seconds on the output's time axis (0 = the first sample written).
+  // Gesture recording. The recorder holds renderer-clock times; recorded_gesture() gives them on
+  // the output's time axis (0 = the first sample written), as a file of the take would be read.
   void set_recording(bool on);
   bool recording() const { return recording_; }
   const GestureRecorder& recorder() const { return recorder_; }
+  GestureRecorder recorded_gesture() const;
 
  private:
   OutputFactory make_output_;

@@ -8,7 +8,7 @@ packages=(
   libsdl2-dev libtinyxml2-dev libpng-dev zlib1g-dev libhidapi-dev libgpiod-dev libimgui-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
-  xvfb xdotool imagemagick xauth
+  xvfb xdotool imagemagick xauth python3
 )
 
 missing=()

@@ -1,0 +1,190 @@
+#!/usr/bin/env bash
+# Drives the real vimg-editor under Xvfb with xdotool: draws one of each primitive, edits a
+# property, undoes and redoes, saves as .vimg and .png and reopens; plays a drag across a DOT to a
+# WAV file and checks the pulse timing; kills the editor after an edit and recovers it.
+# usage: editor_gui_test.sh PATH/TO/vimg-editor ARTIFACT_DIR   (screenshots and files stay there)
+set -euo pipefail
+editor=$(realpath "$1")
+art=$2
+here=$(cd "$(dirname "$0")" && pwd)
+src=$(cd "$here/../.." && pwd)
+check() { python3 "$here/gui_check.py" "$@"; }
+
+for tool in Xvfb xdotool import python3; do
+  command -v "$tool" >/dev/null || { echo "FAIL: $tool is missing (bash scripts/setup.sh installs it)"; exit 1; }
+done
+
+rm -rf "$art"
+mkdir -p "$art/home"
+art=$(realpath "$art")
+export HOME="$art/home" XDG_CONFIG_HOME="$art/home/.config" XDG_STATE_HOME="$art/home/.state"
+export SDL_AUDIODRIVER=dummy
+
+# A display of our own.
+display=""
+for n in $(seq 91 160); do
+  if [ ! -e "/tmp/.X$n-lock" ] && [ ! -e "/tmp/.X11-unix/X$n" ]; then display=$n; break; fi
+done
+[ -n "$display" ] || { echo "FAIL: no free X display number"; exit 1; }
+Xvfb ":$display" -screen 0 1400x900x24 -nolisten tcp >"$art/xvfb.log" 2>&1 &
+xvfb_pid=$!
+editor_pid=""
+cleanup() {
+  if [ -n "$editor_pid" ]; then kill -9 "$editor_pid" 2>/dev/null || true; fi
+  kill "$xvfb_pid" 2>/dev/null || true
+  wait "$xvfb_pid" 2>/dev/null || true
+}
+trap cleanup EXIT
+export DISPLAY=":$display"
+for _ in $(seq 100); do
+  xdotool getdisplaygeometry >/dev/null 2>&1 && break
+  sleep 0.1
+done
+xdotool getdisplaygeometry >/dev/null || { echo "FAIL: Xvfb did not start"; cat "$art/xvfb.log"; exit 1; }
+
+WX=0 WY=0 OX=0 OY=0 PPM=1
+# start NAME ARGS...: launches the editor, waits for its window and its canvas layout.
+start() {
+  local name=$1
+  shift
+  "$editor" --print-layout --zoom 2 "$@" >"$art/$name.layout" 2>"$art/$name.log" &
+  editor_pid=$!
+  local wid=""
+  for _ in $(seq 150); do
+    wid=$(xdotool search --onlyvisible --name 'vimg-editor' 2>/dev/null | head -1 || true)
+    [ -n "$wid" ] && grep -q '^layout page_origin' "$art/$name.layout" && break
+    kill -0 "$editor_pid" 2>/dev/null || { echo "FAIL: the editor exited"; cat "$art/$name.log"; exit 1; }
+    sleep 0.1
+  done
+  [ -n "$wid" ] || { echo "FAIL: no editor window"; exit 1; }
+  eval "$(xdotool getwindowgeometry --shell "$wid")"
+  WX=$X WY=$Y
+  local line
+  line=$(grep '^layout page_origin' "$art/$name.layout" | tail -1)
+  PPM=$(echo "$line" | sed 's/.*ppm\([0-9.]*\) .*/\1/')
+  OX=$(echo "$line" | awk '{print $3}')
+  OY=$(echo "$line" | awk '{print $4}')
+  sleep 0.5
+}
+px() { awk -v w="$WX" -v o="$OX" -v p="$PPM" -v m="$1" 'BEGIN { printf "%d", w + o + m * p + 0.5 }'; }
+py() { awk -v w="$WY" -v o="$OY" -v p="$PPM" -v m="$1" 'BEGIN { printf "%d", w + o + m * p + 0.5 }'; }
+move_mm() { xdotool mousemove "$(px "$1")" "$(py "$2")"; }
+click_mm() { move_mm "$1" "$2"; sleep 0.15; xdotool click 1; sleep 0.2; }
+drag_mm() {
+  move_mm "$1" "$2"; sleep 0.15
+  xdotool mousedown 1; sleep 0.15
+  move_mm "$(awk -v a="$1" -v b="$3" 'BEGIN{print (a+b)/2}')" "$(awk -v a="$2" -v b="$4" 'BEGIN{print (a+b)/2}')"; sleep 0.1
+  move_mm "$3" "$4"; sleep 0.15
+  xdotool mouseup 1; sleep 0.2
+}
+key() { xdotool key "$@"; sleep 0.25; }
+# widget NAME: clicks a widget whose layout the editor printed.
+widget() {
+  local line
+  line=$(grep "^layout $1 " "$art/$current.layout" | tail -1)
+  [ -n "$line" ] || { echo "FAIL: widget $1 not shown"; exit 1; }
+  local x y w h
+  read -r _ _ x y w h <<<"$line"
+  xdotool mousemove $((WX + x + w / 2)) $((WY + y + h / 2)); sleep 0.15
+  xdotool click 1; sleep 0.25
+}
+save_as() {
+  key ctrl+shift+s
+  key ctrl+a
+  xdotool type --delay 20 "$1"; sleep 0.2
+  key Return
+  for _ in $(seq 50); do [ -s "$1" ] && return 0; sleep 0.1; done
+  echo "FAIL: $1 was not saved"; cat "$art/$current.log"; exit 1
+}
+shot() { import -window root "$art/$1.png"; }
+quit_editor() {
+  key ctrl+q
+  for _ in $(seq 100); do kill -0 "$editor_pid" 2>/dev/null || break; sleep 0.1; done
+  if kill -0 "$editor_pid" 2>/dev/null; then echo "FAIL: the editor did not quit"; shot "$current-not-quitting"; exit 1; fi
+  wait "$editor_pid" || { echo "FAIL: the editor exited with $?"; cat "$art/$current.log"; exit 1; }
+  editor_pid=""
+}
+
+echo "== draw one of each primitive, edit, undo/redo, save, reopen"
+current=draw
+start draw --output none --recovery-dir "$art/recovery-draw"
+key d; click_mm 20 20
+key l; drag_mm 10 40 50 40
+key r; drag_mm 10 50 40 70
+key e; drag_mm 50 50 80 70
+key p; click_mm 10 76; click_mm 30 76; click_mm 20 88; key Return
+key v; click_mm 20 20
+sleep 0.3
+widget radius
+key ctrl+a
+xdotool type --delay 30 "3.5"; sleep 0.2
+key Return
+shot draw-edited
+key ctrl+z
+save_as "$art/undone.vimg"
+key ctrl+y
+save_as "$art/drawn.vimg"
+save_as "$art/drawn.png"
+shot draw-saved
+quit_editor
+check drawn "$art/undone.vimg" 2
+check drawn "$art/drawn.vimg" 3.5
+[ "$(head -c 8 "$art/drawn.png" | od -An -tx1 | tr -d ' ')" = "89504e470d0a1a0a" ] || { echo "FAIL: drawn.png is not a PNG"; exit 1; }
+
+current=reopen
+start reopen "$art/drawn.png" --output none --recovery-dir "$art/recovery-reopen"
+shot reopened-png
+save_as "$art/reopened.vimg"
+quit_editor
+check same "$art/drawn.vimg" "$art/reopened.vimg"
+
+echo "== play: drag across a DOT, output to WAV"
+cat >"$art/play.vimg" <<'VIMG'
+<?xml version="1.0" encoding="UTF-8"?>
+<vibroimage version="1.0" width="100" height="60">
+  <dot id="target" x="40" y="30" radius="3" gain="1"/>
+</vibroimage>
+VIMG
+current=play
+start play "$art/play.vimg" --play --output "wav:$art/play.wav" --record-gesture "$art/play_gesture.csv" \
+  --recovery-dir "$art/recovery-play"
+move_mm 10 30; sleep 0.3
+xdotool mousedown 1; sleep 0.1
+x0=$(px 10); x1=$(px 70); y=$(py 30)
+for ((x = x0; x <= x1; x += 3)); do xdotool mousemove "$x" "$y"; sleep 0.004; done
+xdotool mouseup 1; sleep 0.3
+shot playing
+key F5
+sleep 0.5
+quit_editor
+[ -s "$art/play.wav" ] || { echo "FAIL: no WAV written"; cat "$art/play.log"; exit 1; }
+check pulse "$art/play.wav" "$art/play_gesture.csv" 40 30 3
+grep -h 'latency' "$art/play.log" || true
+
+echo "== SIGKILL after an edit, restart, recover"
+cp "$src/assets/examples/smiley.vimg" "$art/recover_me.vimg"
+current=crash
+start crash "$art/recover_me.vimg" --output none --recovery-dir "$art/recovery" --autosave-interval 1
+key d; click_mm 60 20
+for _ in $(seq 60); do [ -s "$art/recovery/recovery.vimg" ] && break; sleep 0.1; done
+[ -s "$art/recovery/recovery.vimg" ] || { echo "FAIL: no autosave"; cat "$art/crash.log"; exit 1; }
+key ctrl+q  # unsaved changes: the editor asks instead of quitting
+sleep 0.3
+kill -0 "$editor_pid" || { echo "FAIL: the editor quit without asking about unsaved changes"; exit 1; }
+shot unsaved-prompt
+key Escape
+kill -9 "$editor_pid"
+wait "$editor_pid" 2>/dev/null || true
+editor_pid=""
+current=recover
+start recover "$art/recover_me.vimg" --output none --recovery-dir "$art/recovery" --autosave-interval 1
+for _ in $(seq 50); do grep -q '^layout recover_dialog' "$art/recover.layout" && break; sleep 0.1; done
+grep -q '^layout recover_dialog' "$art/recover.layout" || { echo "FAIL: no recovery offered"; shot recover-missing; exit 1; }
+shot recovery-offered
+key Return
+save_as "$art/recovered.vimg"
+shot recovered
+quit_editor
+check recovered "$art/recovered.vimg" 60 20
+[ ! -e "$art/recovery/recovery.vimg" ] || { echo "FAIL: the recovery file outlived a clean exit"; exit 1; }
+echo "PASS: editor GUI test (artifacts in $art)"
