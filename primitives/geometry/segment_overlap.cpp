@@ -70,8 +70,7 @@ bool polygon_crossings(const Polygon& polygon, const Vec2& p0, const Vec2& p1,
   const auto& v = polygon.vertices;
   const std::size_t n = v.size();
   const Vec2 d = p1 - p0;
-  const double dd = dot(d, d);
-  const double length = std::sqrt(dd);
+  const double length = norm(d);
   count = 0;
   auto add = [&](double t) {
     if (!(t >= 0.0 && t <= 1.0)) return true;
@@ -93,10 +92,9 @@ bool polygon_crossings(const Polygon& polygon, const Vec2& p0, const Vec2& p1,
       // Accept touching an edge near its ends so paths through vertices are not missed.
       const double slack = e_length > 0.0 ? kBoundaryTolerance_m / e_length : 0.0;
       if (s >= -slack && s <= 1.0 + slack && !add(t)) return false;
-    } else if (std::abs(cross(w, d)) <= kBoundaryTolerance_m * length) {
-      // Collinear: the overlap's ends are where the inside state may change.
-      if (!add(dot(a - p0, d) / dd) || !add(dot(v[i] - p0, d) / dd)) return false;
     }
+    // A parallel edge adds nothing: where the segment runs along an edge, the inside state can
+    // only change at the ends of the run, which the neighbouring (non-parallel) edges supply.
   }
   return true;
 }
