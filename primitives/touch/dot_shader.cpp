@@ -27,7 +27,7 @@ Vec3 DotShader::force_N(const InteractionState& interaction, ShaderState& state)
   if (hit) {
     if (!s.inside) {
       s.entry_time_s = interaction.time_s - interaction.dt_s * (1.0 - hit->begin);
-      s.amplitude = gain_ * touch::normalized_impulse(touch::planar_speed_m_per_s(interaction), context_);
+      s.amplitude = gain_ * touch::full_speed_fraction(touch::planar_speed_m_per_s(interaction), context_);
     }
     s.inside = hit->end >= 1.0;
   } else {

@@ -43,7 +43,7 @@ Vec3 LineShader::force_N(const InteractionState& interaction, ShaderState& state
     if (s.phase != LinePhase::touching) {  // a new pluck, also while still ringing
       s.phase = LinePhase::touching;
       s.entry_time_s = step_start_s + hit->begin * interaction.dt_s;
-      s.amplitude = gain_ * touch::normalized_impulse(touch::planar_speed_m_per_s(interaction), context_);
+      s.amplitude = gain_ * touch::full_speed_fraction(touch::planar_speed_m_per_s(interaction), context_);
     }
     if (hit->end < 1.0) {
       s.phase = LinePhase::ringing;

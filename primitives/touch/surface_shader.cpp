@@ -93,7 +93,7 @@ Vec3 SurfaceShader::force_N(const InteractionState& interaction, ShaderState& st
 
   const double deformation_m = std::clamp(interaction.pressure, 0.0, 1.0) * context_.max_deformation_m;
   const double clip = std::min(deformation_m, relief_m_) / relief_m_;
-  const double speed_fade = touch::normalized_impulse(touch::planar_speed_m_per_s(interaction), context_);
+  const double speed_fade = touch::full_speed_fraction(touch::planar_speed_m_per_s(interaction), context_);
   const double drive = gain_ * clip * speed_fade * pattern_value(pattern_, s.phase_rad);
   return touch::drive_to_force_N(drive, context_);
 }

@@ -14,9 +14,9 @@ inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // Speed in the screen plane (z ignored), m/s.
 inline double planar_speed_m_per_s(const InteractionState& s) { return norm(xy(s.velocity_m_per_s)); }
 
-// f_N for the impulse I = m v: I / (m fullSpeed), capped at 1. The mass cancels, so a massless
-// interaction point still gets a strength; a non-positive fullSpeed means "always full".
-inline double normalized_impulse(double speed_m_per_s, const TouchContext& context) {
+// min(1, v / fullSpeed): the DOT's f_N(I) = I / (m fullSpeed) with I = m v (the mass cancels),
+// the LINE's pluck strength, and the SURFACE's speed fade. A non-positive fullSpeed means full.
+inline double full_speed_fraction(double speed_m_per_s, const TouchContext& context) {
   if (!(context.full_speed_m_per_s > 0.0)) return 1.0;
   return std::clamp(speed_m_per_s / context.full_speed_m_per_s, 0.0, 1.0);
 }
