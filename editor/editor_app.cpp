@@ -558,12 +558,12 @@ void EditorApp::set_play_mode(bool on) {
           [choice](std::string& error) { return make_output(choice, error); }, options_.sample_rate_hz);
     }
     if (auto error = play_->start(doc_.image())) {
-      report_error("cannot play to " + describe(options_.output) + ": " + *error);
+      report_error("cannot play to " + options_.output.text + ": " + *error);
       return;
     }
     if (!options_.record_gesture.empty()) play_->set_recording(true);
     play_mode_ = true;
-    status_ = "playing to " + describe(options_.output);
+    status_ = "playing to " + options_.output.text;
     return;
   }
   play_mode_ = false;

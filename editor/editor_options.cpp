@@ -11,7 +11,8 @@ namespace {
 constexpr const char* kUsage =
     "usage: vimg-editor [FILE] [options]\n"
     "  FILE                     a .vimg or .png vibrotactile image to open\n"
-    "  --output OUT             playing-mode output: audio[:DEVICE] (default), wav:FILE, csv:FILE, none\n"
+    "  --output OUT             playing-mode output (default audio): audio[:DEVICE], wav:FILE, csv:FILE,\n"
+    "                           drv2605l:/dev/i2c-N[,en=CHIP:LINE], spi:/dev/spidevB.C, hid:VID:PID, none\n"
     "  --rate HZ                output sample rate (default 8000)\n"
     "  --recovery-dir DIR       where autosave keeps the recovery file\n"
     "  --autosave-interval S    seconds between autosaves of unsaved changes (default 5)\n"
@@ -61,9 +62,9 @@ ParsedOptions parse_editor_options(int argc, char** argv) {
       o.print_layout = true;
     } else if (arg == "--output") {
       if (!value(v)) return usage_error("--output needs a value");
-      auto choice = parse_output_choice(std::string(v));
-      if (!choice) return usage_error("unknown output '" + std::string(v) + "'");
-      o.output = *choice;
+      OutputChoiceResult parsed = parse_output_choice(std::string(v));
+      if (!parsed.choice) return usage_error(parsed.error);
+      o.output = *parsed.choice;
     } else if (arg == "--rate") {
       if (!value(v) || !parse_double(v, o.sample_rate_hz) || o.sample_rate_hz < 1 || o.sample_rate_hz > 48000) {
         return usage_error("--rate needs a number of Hz in [1, 48000]");

@@ -1,5 +1,7 @@
 #include "editor/output_choice.hpp"
 
+#include <exception>
+
 #include "player/drive_sinks.hpp"
 
 namespace vimg::editor {
@@ -13,40 +15,53 @@ class DiscardSink final : public DriveSink {
   void close() override {}
 };
 
+// A hal output (its devices and its sink) as one DriveSink.
+class HalOutputSink final : public DriveSink {
+ public:
+  explicit HalOutputSink(std::unique_ptr<Output> output) : output_(std::move(output)) {}
+  void open(double sample_rate_hz) override { output_->sink().open(sample_rate_hz); }
+  void write(std::span<const float> drive, double block_start_time_s) override {
+    output_->sink().write(drive, block_start_time_s);
+  }
+  void close() override { output_->sink().close(); }
+
+ private:
+  std::unique_ptr<Output> output_;
+};
+
 }  // namespace
 
-std::optional<OutputChoice> parse_output_choice(const std::string& text) {
-  auto with_argument = [&](const std::string& prefix, OutputChoice::Kind kind) -> std::optional<OutputChoice> {
-    if (text.rfind(prefix, 0) != 0) return std::nullopt;
-    return OutputChoice{kind, text.substr(prefix.size())};
-  };
-  if (text == "audio") return OutputChoice{OutputChoice::Kind::audio, ""};
-  if (text == "none") return OutputChoice{OutputChoice::Kind::none, ""};
-  if (auto c = with_argument("audio:", OutputChoice::Kind::audio)) return c;
-  if (auto c = with_argument("wav:", OutputChoice::Kind::wav); c && !c->argument.empty()) return c;
-  if (auto c = with_argument("csv:", OutputChoice::Kind::csv); c && !c->argument.empty()) return c;
-  return std::nullopt;
+OutputChoiceResult parse_output_choice(const std::string& text) {
+  OutputChoice c;
+  c.text = text;
+  if (text == "none") {
+    c.kind = OutputChoice::Kind::none;
+    return {c, ""};
+  }
+  if (text.rfind("csv:", 0) == 0 && text.size() > 4) {
+    c.kind = OutputChoice::Kind::csv;
+    c.csv_path = text.substr(4);
+    return {c, ""};
+  }
+  OutputParseResult parsed = parse_output_spec(text);
+  if (!parsed.spec) return {std::nullopt, parsed.error};
+  c.kind = OutputChoice::Kind::hal;
+  c.hal_spec = *parsed.spec;
+  return {c, ""};
 }
 
 std::unique_ptr<DriveSink> make_output(const OutputChoice& choice, std::string& error) {
   switch (choice.kind) {
-    case OutputChoice::Kind::wav: return std::make_unique<WavSink>(choice.argument);
-    case OutputChoice::Kind::csv: return std::make_unique<CsvSink>(choice.argument);
     case OutputChoice::Kind::none: return std::make_unique<DiscardSink>();
-    case OutputChoice::Kind::audio: break;
+    case OutputChoice::Kind::csv: return std::make_unique<CsvSink>(choice.csv_path);
+    case OutputChoice::Kind::hal: break;
   }
-  error = "SDL audio output is not available in this build";
-  return nullptr;
-}
-
-std::string describe(const OutputChoice& choice) {
-  switch (choice.kind) {
-    case OutputChoice::Kind::audio: return choice.argument.empty() ? "audio (default device)" : "audio: " + choice.argument;
-    case OutputChoice::Kind::wav: return "wav: " + choice.argument;
-    case OutputChoice::Kind::csv: return "csv: " + choice.argument;
-    case OutputChoice::Kind::none: return "none";
+  try {
+    return std::make_unique<HalOutputSink>(open_output(choice.hal_spec, default_lra_profile()));
+  } catch (const std::exception& e) {
+    error = e.what();
+    return nullptr;
   }
-  return "none";
 }
 
 }  // namespace vimg::editor

@@ -1,26 +1,31 @@
 #pragma once
-// The output of playing mode, chosen on the command line: `audio` (SDL audio, the default),
-// `wav:FILE`, `csv:FILE` or `none` (render and show, drive nothing).
+// The output of playing mode, chosen on the command line: any hal output (`audio` (default),
+// `audio:DEVICE`, `wav:FILE`, `drv2605l:...`, `spi:...`, `hid:VID:PID`, see hal/output_spec.hpp),
+// or, for the editor, `csv:FILE` (time_s,drive rows) and `none` (render and show, drive nothing).
 #include <memory>
 #include <optional>
 #include <string>
 
+#include "hal/output_spec.hpp"
 #include "player/drive_sink.hpp"
 
 namespace vimg::editor {
 
 struct OutputChoice {
-  enum class Kind { audio, wav, csv, none };
-  Kind kind = Kind::audio;
-  std::string argument;  // the file, or the audio device name (empty: the default device)
+  enum class Kind { hal, csv, none };
+  Kind kind = Kind::hal;
+  OutputSpec hal_spec = AudioOutput{};
+  std::string text = "audio";  // as the user wrote it
+  std::string csv_path;
 };
 
-// Parses a choice; nothing when the text names no known output.
-std::optional<OutputChoice> parse_output_choice(const std::string& text);
+struct OutputChoiceResult {
+  std::optional<OutputChoice> choice;
+  std::string error;
+};
+OutputChoiceResult parse_output_choice(const std::string& text);
 
-// Makes the sink; null with `error` set when it cannot.
+// Opens the output; null with `error` set (naming the device) when it cannot.
 std::unique_ptr<DriveSink> make_output(const OutputChoice& choice, std::string& error);
-
-std::string describe(const OutputChoice& choice);
 
 }  // namespace vimg::editor

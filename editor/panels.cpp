@@ -145,7 +145,6 @@ void EditorApp::draw_properties_panel(float x, float y, float w, float h) {
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
   ImGui::Begin("Properties", nullptr, kPanelFlags);
-  ImGui::BeginDisabled(play_mode_ && false);
   if (doc_.selection().size() == 1) {
     draw_element_properties(doc_.selection().front());
   } else if (doc_.selection().size() > 1) {
@@ -154,7 +153,6 @@ void EditorApp::draw_properties_panel(float x, float y, float w, float h) {
   } else {
     draw_document_properties();
   }
-  ImGui::EndDisabled();
   ImGui::End();
 }
 
@@ -298,7 +296,8 @@ void EditorApp::draw_element_properties(const std::string& id) {
   } else {
     ImGui::TextWrapped("An element this version does not know; it is kept as it is.");
   }
-  if (changed && !play_mode_) doc_.replace_element(id, e);
+  // Edits while playing are heard at once: the player cross-fades to the changed scene.
+  if (changed) doc_.replace_element(id, e);
 }
 
 void EditorApp::draw_document_properties() {
@@ -348,7 +347,7 @@ void EditorApp::draw_document_properties() {
   text_field("description", meta.description);
   if (changed) {
     if (!(meta == settings.meta.value_or(Meta{})) || settings.meta) settings.meta = meta;
-    if (!play_mode_) doc_.replace_image_settings(settings);
+    doc_.replace_image_settings(settings);
   }
   ImGui::Separator();
   ImGui::TextDisabled("Canvas: %g x %g mm, %zu top-level elements", doc_.image().width_mm, doc_.image().height_mm,

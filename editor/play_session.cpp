@@ -1,6 +1,7 @@
 #include "editor/play_session.hpp"
 
 #include <cmath>
+#include <exception>
 
 #include "player/scene.hpp"
 
@@ -31,7 +32,13 @@ std::optional<std::string> PlaySession::start(const Image& image) {
   renderer_ = std::make_unique<RealtimeRenderer>(*tap_, options);
   if (!renderer_->set_scene(compile_scene(image))) return "the player refused the scene";
   start_time_s_ = monotonic_time_s();
-  if (auto start_error = renderer_->start()) {
+  std::optional<std::string> start_error;
+  try {
+    start_error = renderer_->start();
+  } catch (const std::exception& e) {  // the device would not open
+    start_error = e.what();
+  }
+  if (start_error) {
     renderer_.reset();
     return start_error;
   }
