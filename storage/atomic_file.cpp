@@ -19,8 +19,13 @@ std::string describe(const std::filesystem::path& path, std::string_view what, i
 std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
   static std::atomic<unsigned> counter{0};
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  return dir / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                std::to_string(counter.fetch_add(1)));
+  std::string name = ".";
+  name += path.filename().string();
+  name += ".tmp-";
+  name += std::to_string(::getpid());
+  name += '-';
+  name += std::to_string(counter.fetch_add(1));
+  return dir / name;
 }
 
 bool write_all(int fd, std::string_view bytes) {

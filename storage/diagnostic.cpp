@@ -6,7 +6,10 @@ namespace vimg {
 
 std::string Diagnostic::to_string() const {
   std::string text = file;
-  if (line > 0) text += ":" + std::to_string(line);
+  if (line > 0) {
+    text += ':';
+    text += std::to_string(line);
+  }
   text += severity == Severity::error ? ": error: " : ": warning: ";
   text += message;
   return text;

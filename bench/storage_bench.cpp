@@ -1,0 +1,139 @@
+// Storage benchmarks (docs/benchmarks.md, "Storage"): loading and validating a 100 000-primitive
+// image against tinyxml2's bare parse of the same text, saving it, and PNG export at 10 px/mm.
+#include <benchmark/benchmark.h>
+#include <tinyxml2.h>
+
+#include <filesystem>
+#include <random>
+#include <string>
+
+#include "storage/image_io.hpp"
+#include "storage/picture.hpp"
+
+namespace {
+
+constexpr int kPrimitives = 100000;
+
+// A 300 x 300 mm canvas holding a third each of dots, lines and surfaces (all three shapes), in
+// groups of ten, every element with an id and full-precision coordinates.
+vimg::Image big_image() {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> pos(0.0, 300.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  vimg::Image image;
+  image.width_mm = 300;
+  image.height_mm = 300;
+  vimg::Element group;
+  for (int i = 0; i < kPrimitives; ++i) {
+    vimg::Element e;
+    e.id = "p" + std::to_string(i);
+    const double x = pos(rng);
+    const double y = pos(rng);
+    switch (i % 5) {
+      case 0:
+      case 1: e.body = vimg::Dot{x, y, 0.5 + unit(rng), unit(rng)}; break;
+      case 2: {
+        vimg::Line l;
+        l.x1_mm = x;
+        l.y1_mm = y;
+        l.x2_mm = x + 5 * unit(rng);
+        l.y2_mm = y + 5 * unit(rng);
+        l.frequency_hz = 50 + 500 * unit(rng);
+        l.gain = unit(rng);
+        e.body = l;
+        break;
+      }
+      default: {
+        vimg::Surface s;
+        s.shape = static_cast<vimg::SurfaceShape>(i % 3);
+        s.x_mm = x;
+        s.y_mm = y;
+        s.width_mm = 1 + 3 * unit(rng);
+        s.height_mm = 1 + 3 * unit(rng);
+        s.cx_mm = x;
+        s.cy_mm = y;
+        s.rx_mm = 0.5 + 2 * unit(rng);
+        s.ry_mm = 0.5 + 2 * unit(rng);
+        if (s.shape == vimg::SurfaceShape::polygon) s.points = {{x, y}, {x + 3, y}, {x + 1.5, y + 2.5}};
+        s.period_mm = 0.5 + 3 * unit(rng);
+        s.gain = unit(rng);
+        e.body = s;
+      }
+    }
+    if (i % 10 == 0) {
+      if (i > 0) image.children.push_back(group);
+      group = vimg::Element{};
+      group.id = "g" + std::to_string(i / 10);
+      group.body = vimg::Group{};
+    }
+    std::get<vimg::Group>(group.body).children.push_back(std::move(e));
+  }
+  image.children.push_back(group);
+  return image;
+}
+
+const vimg::Image& image() {
+  static const vimg::Image value = big_image();
+  return value;
+}
+
+const std::string& text() {
+  static const std::string value = vimg::write_image_xml(image());
+  return value;
+}
+
+void BM_Tinyxml2BareParse(benchmark::State& state) {
+  for (auto _ : state) {
+    tinyxml2::XMLDocument doc(true, tinyxml2::PRESERVE_WHITESPACE);
+    doc.Parse(text().data(), text().size());
+    benchmark::DoNotOptimize(doc.RootElement());
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text().size()));
+}
+BENCHMARK(BM_Tinyxml2BareParse)->Unit(benchmark::kMillisecond);
+
+void BM_LoadAndValidate(benchmark::State& state) {
+  for (auto _ : state) {
+    const vimg::LoadResult result = vimg::parse_image_xml(text(), "bench.vimg");
+    if (!result.ok()) state.SkipWithError("the benchmark image did not load");
+    benchmark::DoNotOptimize(result.image->children.size());
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text().size()));
+}
+BENCHMARK(BM_LoadAndValidate)->Unit(benchmark::kMillisecond);
+
+void BM_WriteXmlText(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(vimg::write_image_xml(image()).size());
+}
+BENCHMARK(BM_WriteXmlText)->Unit(benchmark::kMillisecond);
+
+void BM_SaveXmlFile(benchmark::State& state) {
+  const auto path = std::filesystem::temp_directory_path() / "vimg_storage_bench.vimg";
+  for (auto _ : state) {
+    if (vimg::save_image_file(image(), path)) state.SkipWithError("save failed");
+  }
+  std::filesystem::remove(path);
+}
+BENCHMARK(BM_SaveXmlFile)->Unit(benchmark::kMillisecond);
+
+void BM_DrawPicture10PxPerMm(benchmark::State& state) {
+  vimg::RgbRaster raster;
+  for (auto _ : state) {
+    if (vimg::draw_picture(image(), 10.0, raster)) state.SkipWithError("draw failed");
+    benchmark::DoNotOptimize(raster.rgb.data());
+  }
+}
+BENCHMARK(BM_DrawPicture10PxPerMm)->Unit(benchmark::kMillisecond);
+
+void BM_SavePng10PxPerMm(benchmark::State& state) {
+  const auto path = std::filesystem::temp_directory_path() / "vimg_storage_bench.png";
+  for (auto _ : state) {
+    if (vimg::save_image_file(image(), path, {10.0})) state.SkipWithError("save failed");
+  }
+  std::filesystem::remove(path);
+}
+BENCHMARK(BM_SavePng10PxPerMm)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
