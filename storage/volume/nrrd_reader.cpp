@@ -369,6 +369,20 @@ class Reader {
 
   void decode() {
     const std::string_view payload = bytes_.substr(data_offset_);
+    // Reject data too short for the header before allocating for it.
+    const std::size_t expected_bytes = samples_ * sample_bytes(type_);
+    if (encoding_ == Encoding::raw && payload.size() != expected_bytes) {
+      error(data_line_, "data holds " + std::to_string(payload.size()) + " bytes, the header needs " + std::to_string(expected_bytes));
+      return;
+    }
+    if (encoding_ == Encoding::gzip && expected_bytes / 1100 > payload.size() + 64) {  // deflate expands at most ~1032:1
+      error(data_line_, "gzip data is truncated (too short for the " + std::to_string(expected_bytes) + " bytes the header needs)");
+      return;
+    }
+    if (encoding_ == Encoding::ascii && samples_ > payload.size() / 2 + 1) {  // a digit and a separator each
+      error(data_line_, "data holds fewer than the " + std::to_string(samples_) + " samples the header needs");
+      return;
+    }
     std::vector<float> samples(samples_);
     if (encoding_ == Encoding::ascii) {
       if (!decode_ascii(payload, samples)) return;

@@ -103,6 +103,14 @@ TEST(Nrrd, DataErrors) {
   EXPECT_NE(first_message(parse_nrrd(nan_float, "n.nrrd")).find("not a finite float"), std::string::npos);
 }
 
+TEST(Nrrd, HugeDeclaredSizesWithLittleDataFailBeforeAllocating) {
+  const std::string head = "NRRD0004\ntype: float\ndimension: 3\nsizes: 512 512 512\nendian: little\nencoding: ";
+  EXPECT_EQ(first_message(parse_nrrd(head + "gzip\n\nxyz", "h.nrrd")),
+            "h.nrrd:8: error: gzip data is truncated (too short for the 536870912 bytes the header needs)");
+  EXPECT_EQ(first_message(parse_nrrd(head + "ascii\n\n1 2 3", "h.nrrd")),
+            "h.nrrd:8: error: data holds fewer than the 134217728 samples the header needs");
+}
+
 TEST(Nrrd, GzipErrors) {
   const std::string good = write_nrrd(random_scalar(2), NrrdEncoding::gzip);
   const NrrdLoadResult truncated = parse_nrrd(good.substr(0, good.size() - 30), "g.nrrd");
