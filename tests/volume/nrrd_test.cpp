@@ -138,6 +138,14 @@ TEST(Nrrd, RandomDamageNeverCrashesAndFailsCleanly) {
   }
 }
 
+TEST(Nrrd, LoadsAFileWithItsGeometry) {
+  const NrrdLoadResult r = load_nrrd_file(VIMG_TEST_DATA_DIR "/volume/ramp.nrrd");
+  ASSERT_TRUE(r.scalar.has_value()) << first_message(r);
+  // Values 0, 1, 2 along x at x = -1, -0.5, 0 mm: Lambda = 2 (x + 1 mm) / mm, gradient 2000 / m.
+  EXPECT_NEAR(r.scalar->value(Vec3{-0.75, 0.2, 2.3} * 1e-3), 0.5, 1e-6);
+  EXPECT_NEAR(r.scalar->gradient_per_m(Vec3{-0.5, 0.25, 2.25} * 1e-3).x, 2000.0, 1e-3);
+}
+
 TEST(Nrrd, MissingFileIsAnError) {
   const NrrdLoadResult r = load_nrrd_file("/nonexistent/volume.nrrd");
   EXPECT_FALSE(r.ok());
