@@ -188,14 +188,15 @@ class Drv2605lOut final : public Output {
     options.calibration_file = spec.calibration_file;
     driver_ = std::make_unique<Drv2605lDriver>(bus_, pin_.get(), clock_, profile, options);
     driver_->initialize();
+    startup_warning_ = driver_->calibration_warning();  // read here: later the render thread owns the driver
   }
   DriveSink& sink() override { return *driver_; }
   std::string description() const override { return "drv2605l " + bus_.path(); }
   std::vector<std::string> take_messages() override {
     auto messages = drain(driver_->faults(), bus_.path());
-    if (auto warning = driver_->calibration_warning(); warning && !warned_) {
-      warned_ = true;
-      messages.push_back(*warning);
+    if (startup_warning_) {
+      messages.push_back(*startup_warning_);
+      startup_warning_.reset();
     }
     return messages;
   }
@@ -215,7 +216,7 @@ class Drv2605lOut final : public Output {
   SystemClock clock_;
   std::unique_ptr<GpiodOutput> pin_;
   std::unique_ptr<Drv2605lDriver> driver_;
-  bool warned_ = false;
+  std::optional<std::string> startup_warning_;
 };
 
 class SpiOut final : public Output {

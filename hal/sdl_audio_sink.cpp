@@ -54,12 +54,18 @@ void SdlAudioSink::open(double sample_rate_hz) {
     }
     device_name = options_.device_name.c_str();
   }
-  ring_ = std::make_unique<SampleRing>(static_cast<std::size_t>(options_.ring_frames));
+  int buffer_frames = options_.device_buffer_frames;
+  if (buffer_frames <= 0) {
+    buffer_frames = 16;
+    while (buffer_frames < 4096 && buffer_frames * 1.5 < sample_rate_hz * 0.008) buffer_frames *= 2;
+  }
+  ring_frames_ = options_.ring_frames > 0 ? options_.ring_frames : 4 * buffer_frames;
+  ring_ = std::make_unique<SampleRing>(static_cast<std::size_t>(ring_frames_));
   SDL_AudioSpec wanted{};
   wanted.freq = static_cast<int>(std::lround(sample_rate_hz));
   wanted.format = AUDIO_F32SYS;
   wanted.channels = 1;
-  wanted.samples = static_cast<Uint16>(options_.device_buffer_frames);
+  wanted.samples = static_cast<Uint16>(buffer_frames);
   wanted.callback = &SdlAudioSink::callback;
   wanted.userdata = this;
   SDL_AudioSpec obtained{};
@@ -111,7 +117,7 @@ void SdlAudioSink::write(std::span<const float> drive, double) {
 
 double SdlAudioSink::buffer_latency_s() const {
   if (sample_rate_hz_ <= 0.0) return 0.0;
-  return (obtained_frames_ + options_.ring_frames) / sample_rate_hz_;
+  return (obtained_frames_ + ring_frames_) / sample_rate_hz_;
 }
 
 void SdlAudioSink::close() {

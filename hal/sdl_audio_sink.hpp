@@ -17,8 +17,10 @@ namespace vimg {
 
 struct SdlAudioOptions {
   std::string device_name;            // empty: the system default; otherwise the exact SDL name
-  int device_buffer_frames = 256;     // SDL's buffer: the main part of the output latency
-  int ring_frames = 1024;             // our queue in front of it
+  // SDL's buffer, the main part of the output latency; 0: the power of two nearest 8 ms.
+  int device_buffer_frames = 0;
+  // Our queue in front of it; 0: four device buffers.
+  int ring_frames = 0;
 };
 
 class SdlAudioSink final : public DriveSink {
@@ -47,6 +49,7 @@ class SdlAudioSink final : public DriveSink {
   bool subsystem_ = false;
   double sample_rate_hz_ = 0.0;
   int obtained_frames_ = 0;
+  int ring_frames_ = 0;
   std::atomic<bool> started_{false};
   std::atomic<std::uint64_t> underruns_{0};
 };

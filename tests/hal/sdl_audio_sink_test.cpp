@@ -50,7 +50,7 @@ TEST_F(SdlAudioSinkTest, WritesTheDriveSamplesToTheDevice) {
     SdlAudioSink sink(options);
     sink.open(8000.0);
     EXPECT_EQ(sink.obtained_buffer_frames(), 128);
-    EXPECT_NEAR(sink.buffer_latency_s(), (128.0 + 1024.0) / 8000.0, 1e-9);
+    EXPECT_NEAR(sink.buffer_latency_s(), (128.0 + 4 * 128.0) / 8000.0, 1e-9);
     for (std::size_t start = 0; start < drive.size(); start += 100) {
       sink.write(std::span<const float>(drive).subspan(start, 100), static_cast<double>(start) / 8000.0);
     }
@@ -67,6 +67,18 @@ TEST_F(SdlAudioSinkTest, WritesTheDriveSamplesToTheDevice) {
   }
   for (std::size_t i = first + drive.size(); i < written.size(); ++i) {
     ASSERT_EQ(written[i], 0.0f);  // ends at rest
+  }
+}
+
+TEST_F(SdlAudioSinkTest, DefaultBuffersAreAboutEightMilliseconds) {
+  for (const double rate : {8000.0, 48000.0}) {
+    SdlAudioSink sink;
+    sink.open(rate);
+    const double device_s = sink.obtained_buffer_frames() / rate;
+    EXPECT_GE(device_s, 0.004) << rate;
+    EXPECT_LE(device_s, 0.016) << rate;
+    EXPECT_NEAR(sink.buffer_latency_s(), 5.0 * device_s, 1e-9);
+    sink.close();
   }
 }
 
