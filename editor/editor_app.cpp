@@ -162,8 +162,10 @@ int EditorApp::run() {
     const auto pct = [&](double p) {
       return frame_times_s[std::min(frame_times_s.size() - 1, static_cast<std::size_t>(p * static_cast<double>(frame_times_s.size())))];
     };
-    std::printf("benchmark: primitives=%zu frames=%zu frame_ms mean=%.2f p50=%.2f p99=%.2f max=%.2f fps=%.1f\n",
-                doc_.image().children.size(), frame_times_s.size(), mean * 1e3, pct(0.5) * 1e3, pct(0.99) * 1e3,
+    SDL_RendererInfo info{};
+    SDL_GetRendererInfo(renderer_, &info);
+    std::printf("benchmark: renderer=%s primitives=%zu frames=%zu frame_ms mean=%.2f p50=%.2f p99=%.2f max=%.2f fps=%.1f\n",
+                info.name ? info.name : "?", doc_.image().children.size(), frame_times_s.size(), mean * 1e3, pct(0.5) * 1e3, pct(0.99) * 1e3,
                 frame_times_s.back() * 1e3, 1.0 / mean);
   } else {
     recovery_.discard();  // a clean exit: the user has chosen what to keep
