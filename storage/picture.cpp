@@ -12,6 +12,10 @@ namespace vimg {
 
 namespace {
 
+// Euclidean length without std::hypot's care for overflow: a distance that overflows to infinity
+// only means "far away", which draws nothing.
+inline double length(double dx, double dy) { return std::sqrt(dx * dx + dy * dy); }
+
 struct Rgb {
   double r, g, b;
 };
@@ -65,7 +69,7 @@ class Painter {
     const double channels[3] = {c.r, c.g, c.b};
     for (int i = 0; i < 3; ++i) {
       const double v = p[i] * (1.0 - alpha) + channels[i] * alpha;
-      p[i] = static_cast<std::uint8_t>(std::clamp(std::lround(v), 0L, 255L));
+      p[i] = static_cast<std::uint8_t>(std::clamp(v + 0.5, 0.0, 255.0));
     }
   }
 
@@ -79,7 +83,7 @@ double segment_distance(double x, double y, const Line& l) {
   const double length2 = dx * dx + dy * dy;
   double t = length2 > 0.0 ? ((x - l.x1_mm) * dx + (y - l.y1_mm) * dy) / length2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(x - (l.x1_mm + t * dx), y - (l.y1_mm + t * dy));
+  return length(x - (l.x1_mm + t * dx), y - (l.y1_mm + t * dy));
 }
 
 Rgb mix(const Rgb& a, const Rgb& b, double t) {
@@ -129,7 +133,7 @@ void draw_surface(Painter& painter, const Surface& s) {
       const auto distance = [&](double x, double y) {
         const double qx = std::abs(x - cx) - s.width_mm / 2.0;
         const double qy = std::abs(y - cy) - s.height_mm / 2.0;
-        return std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0);
+        return length(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0);
       };
       painter.fill({s.x_mm, s.y_mm, s.x_mm + s.width_mm, s.y_mm + s.height_mm}, distance, colour);
       break;
@@ -138,10 +142,10 @@ void draw_surface(Painter& painter, const Surface& s) {
       const auto distance = [&](double x, double y) {
         const double u = (x - s.cx_mm) / s.rx_mm;
         const double v = (y - s.cy_mm) / s.ry_mm;
-        const double k = std::hypot(u, v);
+        const double k = length(u, v);
         if (k == 0.0) return -std::min(s.rx_mm, s.ry_mm);
         // First-order distance: (k - 1) / |grad k|.
-        const double grad = std::hypot(u / s.rx_mm, v / s.ry_mm) / k;
+        const double grad = length(u / s.rx_mm, v / s.ry_mm) / k;
         return (k - 1.0) / grad;
       };
       painter.fill({s.cx_mm - s.rx_mm, s.cy_mm - s.ry_mm, s.cx_mm + s.rx_mm, s.cy_mm + s.ry_mm}, distance, colour);
@@ -170,9 +174,9 @@ void draw_line(Painter& painter, const Line& l) {
   const double ripple_mm = 350.0 / l.frequency_hz;
   const double dx = l.x2_mm - l.x1_mm;
   const double dy = l.y2_mm - l.y1_mm;
-  const double length = std::hypot(dx, dy);
+  const double stroke_mm = length(dx, dy);
   const auto colour = [&](double x, double y, double& alpha) {
-    const double along = length > 0.0 ? ((x - l.x1_mm) * dx + (y - l.y1_mm) * dy) / length : 0.0;
+    const double along = stroke_mm > 0.0 ? ((x - l.x1_mm) * dx + (y - l.y1_mm) * dy) / stroke_mm : 0.0;
     const double ripple = 0.5 + 0.5 * std::cos(2.0 * std::numbers::pi * along / ripple_mm);
     alpha = (0.35 + 0.65 * l.gain) * (0.7 + 0.3 * ripple);
     return base;
@@ -188,7 +192,7 @@ void draw_dot(Painter& painter, const Dot& d) {
     return kDotColour;
   };
   painter.fill({d.x_mm - d.radius_mm, d.y_mm - d.radius_mm, d.x_mm + d.radius_mm, d.y_mm + d.radius_mm},
-               [&d](double x, double y) { return std::hypot(x - d.x_mm, y - d.y_mm) - d.radius_mm; }, colour);
+               [&d](double x, double y) { return length(x - d.x_mm, y - d.y_mm) - d.radius_mm; }, colour);
 }
 
 void draw_elements(Painter& painter, const std::vector<Element>& elements) {

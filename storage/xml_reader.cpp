@@ -7,7 +7,10 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
-#include <unordered_map>
+#include <array>
+#include <functional>
+#include <span>
+#include <vector>
 #include <utility>
 
 #include "storage/image_io.hpp"
@@ -76,6 +79,21 @@ struct Bounds {
   double min_x, min_y, max_x, max_y;
 };
 
+// The attributes each element knows, in the order of its slots.
+using AttributeNames = std::span<const std::string_view>;
+constexpr std::string_view kRootAttributes[] = {"version", "width", "height"};
+constexpr std::string_view kInteractionAttributes[] = {"mass", "fullSpeed", "maxDeformation"};
+constexpr std::string_view kDotAttributes[] = {"id", "x", "y", "radius", "gain"};
+constexpr std::string_view kLineAttributes[] = {"id", "x1", "y1", "x2", "y2", "width", "frequency", "damping", "gain"};
+constexpr std::string_view kRectAttributes[] = {"id", "shape", "x", "y", "width", "height", "period", "relief", "pattern", "gain"};
+constexpr std::string_view kEllipseAttributes[] = {"id", "shape", "cx", "cy", "rx", "ry", "period", "relief", "pattern", "gain"};
+constexpr std::string_view kPolygonAttributes[] = {"id", "shape", "points", "period", "relief", "pattern", "gain"};
+// A surface whose shape is missing or unknown: every geometry attribute is known.
+constexpr std::string_view kAnySurfaceAttributes[] = {"id", "shape", "x", "y", "width", "height", "cx", "cy", "rx", "ry",
+                                                      "points", "period", "relief", "pattern", "gain"};
+constexpr std::string_view kGroupAttributes[] = {"id", "name"};
+constexpr std::size_t kMaxSlots = 16;
+
 class Reader {
  public:
   explicit Reader(const std::string& file_name) : file_(file_name) {}
@@ -105,6 +123,7 @@ class Reader {
       } else {
         Image image;
         read_root(*root, image);
+        check_duplicate_ids();
         if (!failed_) result.image = std::move(image);
       }
     }
@@ -125,21 +144,45 @@ class Reader {
 
   static std::string tag(const XMLElement& e) { return std::string("<") + e.Name() + ">"; }
 
+  // Indexes the attributes of `e` by their place in `known` (one pass, read by attribute()).
   // Unknown attributes become warnings and are returned verbatim in order.
-  ExtraAttributes collect_extra_attributes(const XMLElement& e, std::initializer_list<std::string_view> known) {
+  ExtraAttributes gather(const XMLElement& e, AttributeNames known) {
+    known_ = known;
+    slots_.fill(nullptr);
     ExtraAttributes extras;
     for (const XMLAttribute* a = e.FirstAttribute(); a != nullptr; a = a->Next()) {
       const std::string_view name = a->Name();
-      if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+      const std::size_t slot = slot_of(known, name);
+      if (slot < known.size()) {
+        slots_[slot] = a;
+        continue;
+      }
       warning(a->GetLineNum(), "unknown attribute '" + std::string(name) + "' on " + tag(e) + " kept as is");
       extras.emplace_back(a->Name(), a->Value());
     }
     return extras;
   }
 
+  // The place of `name` in `names`, or names.size(). Attribute names are short and mostly differ in
+  // length or first letter, which are compared first.
+  static std::size_t slot_of(AttributeNames names, std::string_view name) {
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const std::string_view k = names[i];
+      if (k.size() == name.size() && !name.empty() && k[0] == name[0] && k == name) return i;
+    }
+    return names.size();
+  }
+
+  // An attribute of the element last gathered.
+  const XMLAttribute* attribute(const XMLElement& e, std::string_view name) const {
+    const std::size_t slot = slot_of(known_, name);
+    if (slot == known_.size()) return e.FindAttribute(std::string(name).c_str());
+    return slots_[slot];
+  }
+
   // Reads a number attribute; `fallback` is used when it is absent (absent and no fallback is an error).
   double number(const XMLElement& e, const char* name, Range range, std::optional<double> fallback) {
-    const XMLAttribute* a = e.FindAttribute(name);
+    const XMLAttribute* a = attribute(e, name);
     if (a == nullptr) {
       if (!fallback) error(e.GetLineNum(), tag(e) + " is missing required attribute '" + name + "'");
       return fallback.value_or(0.0);
@@ -157,24 +200,45 @@ class Reader {
   }
 
   void read_id(const XMLElement& e, Element& element) {
-    const XMLAttribute* a = e.FindAttribute("id");
+    const XMLAttribute* a = attribute(e, "id");
     if (a == nullptr) return;
     element.id = a->Value();
     if (!is_valid_id(element.id)) {
       error(a->GetLineNum(), tag(e) + " id \"" + element.id + "\" must match [A-Za-z_][A-Za-z0-9_.-]*");
       return;
     }
-    const auto [it, inserted] = ids_.emplace(element.id, a->GetLineNum());
-    if (!inserted) {
-      error(a->GetLineNum(), "duplicate id '" + element.id + "' (first used on line " + std::to_string(it->second) + ")");
+    ids_.emplace_back(std::string_view(a->Value()), a->GetLineNum());
+  }
+
+  // Every id used twice or more is an error at each later use, naming the first. Sorting hashes
+  // (with the document position) keeps this fast for 100 000 ids.
+  void check_duplicate_ids() {
+    std::vector<std::pair<std::size_t, std::size_t>> keys;  // hash, index in ids_
+    keys.reserve(ids_.size());
+    for (std::size_t i = 0; i < ids_.size(); ++i) keys.emplace_back(std::hash<std::string_view>{}(ids_[i].first), i);
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t run = 0; run < keys.size();) {
+      std::size_t end = run + 1;
+      while (end < keys.size() && keys[end].first == keys[run].first) ++end;
+      for (std::size_t j = run + 1; j < end; ++j) {
+        const auto& later = ids_[keys[j].second];
+        for (std::size_t k = run; k < j; ++k) {
+          const auto& first = ids_[keys[k].second];
+          if (first.first != later.first) continue;  // a hash collision, not a duplicate
+          error(later.second, "duplicate id '" + std::string(later.first) + "' (first used on line " +
+                                  std::to_string(first.second) + ")");
+          break;
+        }
+      }
+      run = end;
     }
   }
 
   void read_root(const XMLElement& root, Image& image) {
+    image.extra_attributes = gather(root, kRootAttributes);
     read_version(root, image);
     image.width_mm = number(root, "width", Range::canvas_size, std::nullopt);
     image.height_mm = number(root, "height", Range::canvas_size, std::nullopt);
-    image.extra_attributes = collect_extra_attributes(root, {"version", "width", "height"});
     canvas_w_ = image.width_mm;
     canvas_h_ = image.height_mm;
     int meta_line = 0;
@@ -208,7 +272,7 @@ class Reader {
   }
 
   void read_version(const XMLElement& root, Image& image) {
-    const XMLAttribute* a = root.FindAttribute("version");
+    const XMLAttribute* a = attribute(root, "version");
     if (a == nullptr) {
       error(root.GetLineNum(), "<vibroimage> is missing required attribute 'version'");
       return;
@@ -348,10 +412,10 @@ class Reader {
 
   InteractionParams read_interaction(const XMLElement& e) {
     InteractionParams p;
+    p.extra_attributes = gather(e, kInteractionAttributes);
     p.mass_kg = number(e, "mass", Range::positive, InteractionParams{}.mass_kg);
     p.full_speed_mm_per_s = number(e, "fullSpeed", Range::positive, InteractionParams{}.full_speed_mm_per_s);
     p.max_deformation_mm = number(e, "maxDeformation", Range::positive, InteractionParams{}.max_deformation_mm);
-    p.extra_attributes = collect_extra_attributes(e, {"mass", "fullSpeed", "maxDeformation"});
     for (const XMLNode* node = e.FirstChild(); node != nullptr; node = node->NextSibling()) {
       if (const XMLElement* c = node->ToElement()) {
         warning(c->GetLineNum(), "element " + tag(*c) + " inside <interaction> is ignored");
@@ -369,17 +433,21 @@ class Reader {
     element.source_line = e.GetLineNum();
     const std::string_view name = e.Name();
     if (name == "dot") {
+      element.extra_attributes = gather(e, kDotAttributes);
       read_id(e, element);
-      element.body = read_dot(e, element);
+      element.body = read_dot(e);
     } else if (name == "line") {
+      element.extra_attributes = gather(e, kLineAttributes);
       read_id(e, element);
-      element.body = read_line(e, element);
+      element.body = read_line(e);
     } else if (name == "surface") {
+      element.extra_attributes = gather(e, surface_attributes(e));
       read_id(e, element);
-      element.body = read_surface(e, element);
+      element.body = read_surface(e);
     } else if (name == "group") {
+      element.extra_attributes = gather(e, kGroupAttributes);
       read_id(e, element);
-      element.body = read_group(e, element, depth + 1);
+      element.body = read_group(e, depth + 1);
       return element;
     } else {
       warning(e.GetLineNum(), "unknown element " + tag(e) + " kept as is");
@@ -411,18 +479,17 @@ class Reader {
     }
   }
 
-  Dot read_dot(const XMLElement& e, Element& element) {
+  Dot read_dot(const XMLElement& e) {
     Dot d;
     d.x_mm = number(e, "x", Range::any, std::nullopt);
     d.y_mm = number(e, "y", Range::any, std::nullopt);
     d.radius_mm = number(e, "radius", Range::positive, Dot{}.radius_mm);
     d.gain = number(e, "gain", Range::unit_closed, Dot{}.gain);
-    element.extra_attributes = collect_extra_attributes(e, {"id", "x", "y", "radius", "gain"});
     warn_if_outside(e, {d.x_mm - d.radius_mm, d.y_mm - d.radius_mm, d.x_mm + d.radius_mm, d.y_mm + d.radius_mm});
     return d;
   }
 
-  Line read_line(const XMLElement& e, Element& element) {
+  Line read_line(const XMLElement& e) {
     Line l;
     l.x1_mm = number(e, "x1", Range::any, std::nullopt);
     l.y1_mm = number(e, "y1", Range::any, std::nullopt);
@@ -432,8 +499,6 @@ class Reader {
     l.frequency_hz = number(e, "frequency", Range::frequency, Line{}.frequency_hz);
     l.damping = number(e, "damping", Range::unit_open, Line{}.damping);
     l.gain = number(e, "gain", Range::unit_closed, Line{}.gain);
-    element.extra_attributes =
-        collect_extra_attributes(e, {"id", "x1", "y1", "x2", "y2", "width", "frequency", "damping", "gain"});
     const double half = l.width_mm / 2.0;
     warn_if_outside(e, {std::min(l.x1_mm, l.x2_mm) - half, std::min(l.y1_mm, l.y2_mm) - half,
                         std::max(l.x1_mm, l.x2_mm) + half, std::max(l.y1_mm, l.y2_mm) + half});
@@ -442,7 +507,7 @@ class Reader {
 
   std::vector<Point2Mm> read_points(const XMLElement& e) {
     std::vector<Point2Mm> points;
-    const XMLAttribute* a = e.FindAttribute("points");
+    const XMLAttribute* a = attribute(e, "points");
     if (a == nullptr) {
       error(e.GetLineNum(), "<surface> is missing required attribute 'points'");
       return points;
@@ -480,9 +545,18 @@ class Reader {
     return points;
   }
 
-  Surface read_surface(const XMLElement& e, Element& element) {
+  static AttributeNames surface_attributes(const XMLElement& e) {
+    const char* shape = e.Attribute("shape");
+    const std::string_view v = shape != nullptr ? shape : "";
+    if (v == "rect") return kRectAttributes;
+    if (v == "ellipse") return kEllipseAttributes;
+    if (v == "polygon") return kPolygonAttributes;
+    return kAnySurfaceAttributes;
+  }
+
+  Surface read_surface(const XMLElement& e) {
     Surface s;
-    const XMLAttribute* shape = e.FindAttribute("shape");
+    const XMLAttribute* shape = attribute(e, "shape");
     Bounds bounds{0, 0, 0, 0};
     if (shape == nullptr) {
       error(e.GetLineNum(), "<surface> is missing required attribute 'shape'");
@@ -518,26 +592,12 @@ class Reader {
     s.relief_mm = number(e, "relief", Range::positive, Surface{}.relief_mm);
     s.pattern = read_pattern(e);
     s.gain = number(e, "gain", Range::unit_closed, Surface{}.gain);
-    switch (s.shape) {
-      case SurfaceShape::rect:
-        element.extra_attributes = collect_extra_attributes(
-            e, {"id", "shape", "x", "y", "width", "height", "period", "relief", "pattern", "gain"});
-        break;
-      case SurfaceShape::ellipse:
-        element.extra_attributes = collect_extra_attributes(
-            e, {"id", "shape", "cx", "cy", "rx", "ry", "period", "relief", "pattern", "gain"});
-        break;
-      case SurfaceShape::polygon:
-        element.extra_attributes =
-            collect_extra_attributes(e, {"id", "shape", "points", "period", "relief", "pattern", "gain"});
-        break;
-    }
     if (shape != nullptr) warn_if_outside(e, bounds);
     return s;
   }
 
   SurfacePattern read_pattern(const XMLElement& e) {
-    const XMLAttribute* a = e.FindAttribute("pattern");
+    const XMLAttribute* a = attribute(e, "pattern");
     if (a == nullptr) return Surface{}.pattern;
     const std::string_view v = a->Value();
     if (v == "sine") return SurfacePattern::sine;
@@ -547,10 +607,9 @@ class Reader {
     return Surface{}.pattern;
   }
 
-  Group read_group(const XMLElement& e, Element& element, int depth) {
+  Group read_group(const XMLElement& e, int depth) {
     Group g;
-    if (const char* name = e.Attribute("name")) g.name = std::string(name);
-    element.extra_attributes = collect_extra_attributes(e, {"id", "name"});
+    if (const XMLAttribute* name = attribute(e, "name")) g.name = std::string(name->Value());
     if (depth > kMaxGroupDepth) {
       error(e.GetLineNum(), "groups nested deeper than " + std::to_string(kMaxGroupDepth) + " levels");
       return g;
@@ -568,7 +627,9 @@ class Reader {
   std::string file_;
   std::vector<Diagnostic> diagnostics_;
   bool failed_ = false;
-  std::unordered_map<std::string, int> ids_;
+  std::vector<std::pair<std::string_view, int>> ids_;  // id text (owned by the document), line
+  AttributeNames known_;
+  std::array<const XMLAttribute*, kMaxSlots> slots_{};
   double canvas_w_ = 0.0;
   double canvas_h_ = 0.0;
 };
