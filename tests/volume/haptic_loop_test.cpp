@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 #include "hal/force/simulated_force_device.hpp"
@@ -23,17 +24,28 @@ std::unique_ptr<HapticScene> constant_scene(const Vec3& f) {
 // A device wrapper that records every force it is sent, for the threaded tests.
 class RecordingDevice final : public HapticPort {
  public:
-  explicit RecordingDevice(SimulatedForceDevice& inner) : inner_(inner) { forces_.reserve(100000); }
-  bool read(double t, ProbeSample& s) override { return inner_.read(t, s); }
+  explicit RecordingDevice(SimulatedForceDevice& inner) : inner_(inner) {
+    forces_.reserve(100000);
+    times_.reserve(100000);
+  }
+  bool read(double t, ProbeSample& s) override {
+    last_read_s_ = t;
+    return inner_.read(t, s);
+  }
   bool write_force(const Vec3& f) override {
     const bool ok = inner_.write_force(f);
-    if (forces_.size() < forces_.capacity()) forces_.push_back(f);
+    if (forces_.size() < forces_.capacity()) {
+      forces_.push_back(f);
+      times_.push_back(last_read_s_);
+    }
     return ok;
   }
   double max_force_N() const override { return inner_.max_force_N(); }
   std::vector<Vec3> forces_;
+  std::vector<double> times_;  // loop time of the cycle that sent each force
 
  private:
+  double last_read_s_ = 0.0;
   SimulatedForceDevice& inner_;
 };
 
@@ -89,9 +101,12 @@ TEST(HapticLoop, SceneSwapsWhileRunningCrossFade) {
   }
   loop.stop();
   EXPECT_NEAR(device.forces_[device.forces_.size() - 2].y, 0.5, 1e-12);
-  // Fading: no jump between consecutive cycles bigger than one 50-cycle fade step of 0.1 N.
+  // Fading: each swap changes the force by at most 0.1 N * sqrt(2) (the first turns x into y),
+  // spread over 50 ms, so between two cycles it moves by at most that times dt / 50 ms (dt is
+  // larger when the loop was late and skipped ahead).
   for (std::size_t i = 1; i + 1 < device.forces_.size(); ++i) {
-    EXPECT_LE(norm(device.forces_[i] - device.forces_[i - 1]), 0.1 / 50 * 1.5 + 1e-12) << i;
+    const double dt = device.times_[i] - device.times_[i - 1];
+    EXPECT_LE(norm(device.forces_[i] - device.forces_[i - 1]), 0.1 * std::sqrt(2.0) * dt / 0.05 + 1e-9) << i;
   }
 }
 
