@@ -1,5 +1,6 @@
 #include <tinyxml2.h>
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -254,6 +255,21 @@ class SceneReader {
     }
   }
 
+  // The vibration must stay below the strength of the kinaesthetic features (volume paper,
+  // section 3.3), or it masks them: a warning, since the file is still usable.
+  void check_below_kinaesthetic(double amplitude_N, int line, const char* what) {
+    if (!scene_.kinaesthetic || scene_.kinaesthetic->mode == KinaestheticMode::gradient_force) return;
+    const double strength = scene_.kinaesthetic->mode == KinaestheticMode::yielding_surface
+                                ? scene_.kinaesthetic->yield_force_N
+                                : scene_.kinaesthetic->across_force_N;
+    if (amplitude_N >= strength) {
+      result_.diagnostics.push_back({Diagnostic::Severity::warning, file_, line,
+                                     std::string(what) + " amplitude " + format_decimal(amplitude_N) +
+                                         " N is not below the kinaesthetic strength " + format_decimal(strength) +
+                                         " N: the vibration may mask the structure"});
+    }
+  }
+
   void check_references() {
     if (scene_.kinaesthetic) {
       const auto kind = scene_.kinaesthetic->mode == KinaestheticMode::vector_guidance ? VolumeDataRef::Kind::vector
@@ -265,9 +281,13 @@ class SceneReader {
     }
     for (std::size_t i = 0; i < scene_.roughness.size(); ++i) {
       expect_data(scene_.roughness[i].data, VolumeDataRef::Kind::scalar, roughness_lines_[i], "<roughness>");
+      double peak = 0.0;
+      for (const auto& p : scene_.roughness[i].amplitude_points) peak = std::max(peak, p.output);
+      check_below_kinaesthetic(peak, roughness_lines_[i], "roughness");
     }
     for (std::size_t i = 0; i < scene_.transition_cues.size(); ++i) {
       expect_data(scene_.transition_cues[i].data, VolumeDataRef::Kind::scalar, cue_lines_[i], "<transitionCue>");
+      check_below_kinaesthetic(scene_.transition_cues[i].amplitude_N, cue_lines_[i], "transition cue");
     }
   }
 

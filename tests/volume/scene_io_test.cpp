@@ -69,6 +69,17 @@ TEST(VolumeSceneXml, ErrorsNameFileAndLine) {
   EXPECT_EQ(first_message(parse_volume_scene_xml("<scene/>", "y.xml").diagnostics), "y.xml:1: error: the root element must be <volumeScene>");
 }
 
+TEST(VolumeSceneXml, WarnsWhenTheVibrationIsNotBelowTheKinaestheticStrength) {
+  VolumeScene scene = make_study_set(2).scene;  // guidance resists with 1.5 N
+  EXPECT_TRUE(parse_volume_scene_xml(write_volume_scene_xml(scene), "s.xml").diagnostics.empty());
+  scene.transition_cues[0].amplitude_N = 1.5;
+  const VolumeSceneParseResult r = parse_volume_scene_xml(write_volume_scene_xml(scene), "s.xml");
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(first_message(r.diagnostics),
+            "s.xml:15: warning: transition cue amplitude 1.5 N is not below the kinaesthetic strength 1.5 N: "
+            "the vibration may mask the structure");
+}
+
 class TempDir {
  public:
   TempDir() : path_(std::filesystem::temp_directory_path() / ("vimg_volume_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
