@@ -131,7 +131,7 @@ class LatencySink final : public DriveSink {
 };
 
 // Time from push_event() of a touch onto a surface to the sink receiving the first block that
-// reflects it (manual time). Block: 64 samples at 8 kHz = 8 ms.
+// reflects it (manual time). Block: 64 samples at 8 kHz = 8 ms. Arg: SCHED_FIFO priority.
 void BM_EventToFirstSampleLatency(benchmark::State& state) {
   Image img;
   Surface s;
@@ -140,7 +140,9 @@ void BM_EventToFirstSampleLatency(benchmark::State& state) {
   s.gain = 0.5;
   img.children.push_back(Element{"s", s, {}, {}, 0});
   LatencySink sink;
-  RealtimeRenderer r(sink);
+  RealtimeOptions o;
+  o.realtime_priority = static_cast<int>(state.range(0));
+  RealtimeRenderer r(sink, o);
   r.set_scene(compile_scene(img));
   if (r.start()) {
     state.SkipWithError("cannot start");
@@ -174,7 +176,7 @@ void BM_EventToFirstSampleLatency(benchmark::State& state) {
   }
   state.counters["block_ms"] = 1e3 * static_cast<double>(r.block_samples()) / r.sample_rate_hz();
 }
-BENCHMARK(BM_EventToFirstSampleLatency)->UseManualTime()->Iterations(200)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EventToFirstSampleLatency)->ArgName("fifo_priority")->Arg(0)->Arg(80)->UseManualTime()->Iterations(200)->Unit(benchmark::kMillisecond);
 
 class NullSink final : public DriveSink {
  public:
@@ -185,10 +187,13 @@ class NullSink final : public DriveSink {
 
 // The real-time loop for 3 s at 8 kHz over 10 000 primitives with 10 fingers moving (120 Hz
 // events): wake-up lateness against the absolute deadlines.
+// Arg: SCHED_FIFO priority (0: normal scheduling).
 void BM_RealtimeLoopJitter(benchmark::State& state) {
   const Image img = random_image(10000);
   NullSink sink;
-  RealtimeRenderer r(sink);
+  RealtimeOptions o;
+  o.realtime_priority = static_cast<int>(state.range(0));
+  RealtimeRenderer r(sink, o);
   r.set_scene(compile_scene(img));
   for (auto _ : state) {
     if (r.start()) {
@@ -210,9 +215,10 @@ void BM_RealtimeLoopJitter(benchmark::State& state) {
     state.counters["jitter_p99_us"] = s.jitter_p99_s * 1e6;
     state.counters["jitter_max_us"] = s.jitter_max_s * 1e6;
     state.counters["overruns"] = static_cast<double>(s.overruns);
+    state.counters["fifo"] = s.realtime_priority ? 1.0 : 0.0;
   }
 }
-BENCHMARK(BM_RealtimeLoopJitter)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RealtimeLoopJitter)->ArgName("fifo_priority")->Arg(0)->Arg(80)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

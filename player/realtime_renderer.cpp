@@ -6,6 +6,9 @@
 #include <cmath>
 #include <ctime>
 
+#include <pthread.h>
+#include <sched.h>
+
 #include "player/contact_mixer.hpp"
 #include "player/soft_limiter.hpp"
 
@@ -144,6 +147,12 @@ void RealtimeRenderer::render_block(double block_start_s) {
 }
 
 void RealtimeRenderer::run() {
+  if (options_.realtime_priority > 0) {
+    sched_param param{};
+    param.sched_priority = std::clamp(options_.realtime_priority, 1, 99);
+    realtime_priority_.store(pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0,
+                             std::memory_order_relaxed);
+  }
   const double rate = options_.sample_rate_hz;
   const double block_s = static_cast<double>(block_samples_) / rate;
   const std::int64_t start_ns = now_ns();
@@ -190,6 +199,7 @@ LoopStats RealtimeRenderer::stats() const {
   s.overruns = overruns_.load(std::memory_order_relaxed);
   s.dropped_events = dropped_events_.load(std::memory_order_relaxed);
   s.active_contacts = active_contacts_.load(std::memory_order_relaxed);
+  s.realtime_priority = realtime_priority_.load(std::memory_order_relaxed);
   std::uint64_t total = 0;
   std::array<std::uint32_t, kJitterBuckets> counts{};
   for (std::size_t i = 0; i < kJitterBuckets; ++i) total += counts[i] = jitter_histogram_[i].load(std::memory_order_relaxed);

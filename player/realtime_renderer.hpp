@@ -32,6 +32,10 @@ struct RealtimeOptions {
   std::size_t max_contacts = 512;
   std::size_t event_queue_capacity = 1024;
   LiveTrackerOptions tracker;
+  // > 0: ask for SCHED_FIFO at this priority (1..99) for the render thread. Needs the privilege
+  // (CAP_SYS_NICE or an rtprio limit); without it the thread keeps normal priority and
+  // LoopStats::realtime_priority is false.
+  int realtime_priority = 0;
 };
 
 struct LoopStats {
@@ -43,6 +47,7 @@ struct LoopStats {
   std::uint64_t overruns = 0;        // blocks that started more than one block late
   std::uint64_t dropped_events = 0;  // queue full or stale
   std::uint64_t active_contacts = 0;
+  bool realtime_priority = false;  // SCHED_FIFO was granted
 };
 
 class RealtimeRenderer {
@@ -99,6 +104,7 @@ class RealtimeRenderer {
   std::atomic<std::uint64_t> overruns_{0};
   std::atomic<std::uint64_t> dropped_events_{0};
   std::atomic<std::uint64_t> active_contacts_{0};
+  std::atomic<bool> realtime_priority_{false};
 };
 
 }  // namespace vimg
