@@ -50,6 +50,24 @@ bool parse_finger(std::string_view s, int& out) {
   return r.ec == std::errc{} && r.ptr == s.data() + s.size();
 }
 
+// A field as it appears in a message: in quotes, with control and non-ASCII bytes as \xNN.
+std::string quoted(std::string_view field) {
+  static const char* const kHex = "0123456789ABCDEF";
+  std::string out = "'";
+  for (const char c : field.substr(0, 64)) {
+    const auto b = static_cast<unsigned char>(c);
+    if (b < 0x20 || b >= 0x7F || c == '\'' || c == '\\') {
+      out += "\\x";
+      out += kHex[b >> 4];
+      out += kHex[b & 15];
+    } else {
+      out += c;
+    }
+  }
+  if (field.size() > 64) out += "...";
+  return out + "'";
+}
+
 std::string format_number(double v) {
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
@@ -125,26 +143,26 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
     int finger = 0;
     bool ok = true;
     if (!parse_number(f[0], p.time_s)) {
-      error(line_no, "time_s '" + std::string(f[0]) + "' is not a finite number");
+      error(line_no, "time_s " + quoted(f[0]) + " is not a finite number");
       ok = false;
     }
     if (!parse_finger(f[1], finger) || finger < 0 || finger > kMaxGestureFinger) {
-      error(line_no, "finger '" + std::string(f[1]) + "' is not an integer in 0.." +
+      error(line_no, "finger " + quoted(f[1]) + " is not an integer in 0.." +
                          std::to_string(kMaxGestureFinger));
       ok = false;
     }
     if (!parse_number(f[2], p.x_mm)) {
-      error(line_no, "x_mm '" + std::string(f[2]) + "' is not a finite number");
+      error(line_no, "x_mm " + quoted(f[2]) + " is not a finite number");
       ok = false;
     }
     if (!parse_number(f[3], p.y_mm)) {
-      error(line_no, "y_mm '" + std::string(f[3]) + "' is not a finite number");
+      error(line_no, "y_mm " + quoted(f[3]) + " is not a finite number");
       ok = false;
     }
     if (f[4].empty()) {
       p.pressure = 1.0;
     } else if (!parse_number(f[4], p.pressure) || p.pressure < 0.0 || p.pressure > 1.0) {
-      error(line_no, "pressure '" + std::string(f[4]) + "' is not a number in [0,1]");
+      error(line_no, "pressure " + quoted(f[4]) + " is not a number in [0,1]");
       ok = false;
     }
     int phase = -1;
@@ -152,7 +170,7 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
     else if (f[5] == "move") phase = 1;
     else if (f[5] == "up") phase = 2;
     else {
-      error(line_no, "phase '" + std::string(f[5]) + "' is not down, move or up");
+      error(line_no, "phase " + quoted(f[5]) + " is not down, move or up");
       ok = false;
     }
     if (!ok) continue;
@@ -175,7 +193,7 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
       gesture.strokes.push_back(GestureStroke{finger, {p}});
     } else {
       if (!st.down) {
-        error(line_no, "finger " + std::to_string(finger) + " is not down (" + std::string(f[5]) +
+        error(line_no, "finger " + std::to_string(finger) + " is not down (" + quoted(f[5]) +
                            " without a preceding down)");
         continue;
       }

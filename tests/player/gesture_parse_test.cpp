@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <random>
+#include <regex>
+
 #include "player/gesture.hpp"
 
 namespace vimg {
@@ -112,6 +115,42 @@ TEST(GestureParse, WriteThenParseRoundTrips) {
       EXPECT_EQ(a.points[k].time_s, b.points[k].time_s);
       EXPECT_EQ(a.points[k].x_mm, b.points[k].x_mm);
       EXPECT_EQ(a.points[k].pressure, b.points[k].pressure);
+    }
+  }
+}
+
+TEST(GestureParse, MutatedFilesGiveLocatedErrorsOrValidGestures) {
+  const std::string valid = std::string(kHeader) +
+                            "0.000,0,5.0,20.0,1.0,down\n0.010,0,6.0,20.0,0.5,move\n0.005,1,1,1,,down\n"
+                            "0.400,0,45.0,20.0,,up\n0.5,1,2,2,1,up\n";
+  const std::regex located(R"(^g\.csv:[0-9]+: error: .+)");
+  std::mt19937 rng(1234);
+  const std::string alphabet = "0123456789.,-+eE \n\r#abcdownupmve\t";
+  for (int round = 0; round < 3000; ++round) {
+    std::string text = valid;
+    const int edits = 1 + static_cast<int>(rng() % 4);
+    for (int e = 0; e < edits; ++e) {
+      const std::size_t at = rng() % (text.size() + 1);
+      switch (rng() % 3) {
+        case 0: text.insert(at, 1, alphabet[rng() % alphabet.size()]); break;
+        case 1: if (at < text.size()) text.erase(at, 1); break;
+        default: if (at < text.size()) text[at] = static_cast<char>(rng() % 256); break;
+      }
+    }
+    const auto r = parse_gesture_csv(text, "g.csv");
+    if (r.ok()) {
+      for (const auto& s : r.gesture->strokes) {
+        ASSERT_FALSE(s.points.empty());
+        for (std::size_t k = 0; k < s.points.size(); ++k) {
+          ASSERT_TRUE(s.points[k].pressure >= 0.0 && s.points[k].pressure <= 1.0);
+          if (k > 0) {
+            ASSERT_GE(s.points[k].time_s, s.points[k - 1].time_s);
+          }
+        }
+      }
+    } else {
+      ASSERT_FALSE(r.errors.empty());
+      for (const auto& e : r.errors) ASSERT_TRUE(std::regex_match(e, located)) << e;
     }
   }
 }
