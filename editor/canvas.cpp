@@ -112,6 +112,18 @@ void EditorApp::draw_rulers_and_grid(ImDrawList* dl, float x, float y, float w, 
 
 void EditorApp::draw_element(ImDrawList* dl, const Element& element, bool highlighted) {
   const float ppm = static_cast<float>(view_.px_per_mm());
+  // Level of detail: a primitive a few pixels across shows only its colour and place.
+  if (!std::holds_alternative<Group>(element.body)) {
+    if (const auto b = element_bounds(element); b && std::max(b->width_mm(), b->height_mm()) * ppm < 6.0) {
+      const ImU32 col = highlighted                                  ? kHighlight
+                        : std::holds_alternative<Dot>(element.body)  ? kDotColour
+                        : std::holds_alternative<Line>(element.body) ? kLineColour
+                                                                     : kSurfaceColour;
+      dl->AddRectFilled(iv(view_.to_px({b->x0_mm, b->y0_mm})), iv(view_.to_px({b->x1_mm, b->y1_mm})),
+                        with_alpha(col, 200));
+      return;
+    }
+  }
   if (const auto* d = std::get_if<Dot>(&element.body)) {
     const Point2Px c = view_.to_px({d->x_mm, d->y_mm});
     const float r = std::max(2.0f, view_.length_px(d->radius_mm));

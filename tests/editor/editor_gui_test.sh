@@ -80,8 +80,12 @@ drag_mm() {
 key() { xdotool key "$@"; sleep 0.25; }
 # widget NAME: clicks a widget whose layout the editor printed.
 widget() {
-  local line
-  line=$(grep "^layout $1 " "$art/$current.layout" | tail -1)
+  local line=""
+  for _ in $(seq 50); do
+    line=$(grep "^layout $1 " "$art/$current.layout" | tail -1 || true)
+    [ -n "$line" ] && break
+    sleep 0.1
+  done
   [ -n "$line" ] || { echo "FAIL: widget $1 not shown"; exit 1; }
   local x y w h
   read -r _ _ x y w h <<<"$line"
