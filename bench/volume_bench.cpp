@@ -85,12 +85,13 @@ void BM_HapticCycleEveryShader(benchmark::State& state) {
 }
 BENCHMARK(BM_HapticCycleEveryShader)->Unit(benchmark::kMicrosecond);
 
-// Loop lateness against its absolute deadlines over 3 s with the simulated device.
+// Loop lateness against its absolute deadlines over 3 s with the simulated device, at normal
+// priority and with SCHED_FIFO when the system grants it.
 void BM_HapticLoopJitter(benchmark::State& state) {
   const double rate = static_cast<double>(state.range(0));
   for (auto _ : state) {
     SimulatedForceDevice device(std::vector<HandPathPoint>{{0.0, Vec3{}}, {3.0, Vec3{0.05, 0.0, 0.0}}});
-    HapticLoop loop(device, {rate, {3.3, 0.2, 0.1, 0.1}});
+    HapticLoop loop(device, {rate, {3.3, 0.2, 0.1, 0.1}, static_cast<int>(state.range(1))});
     loop.submit_scene(every_shader_scene(scalar_volume(64), vector_volume(64)));
     loop.start();
     std::this_thread::sleep_for(std::chrono::seconds(3));
@@ -100,9 +101,11 @@ void BM_HapticLoopJitter(benchmark::State& state) {
     state.counters["p50_us"] = j.p50_us;
     state.counters["p99_us"] = j.p99_us;
     state.counters["max_us"] = j.max_us;
+    state.counters["fifo"] = loop.realtime() ? 1.0 : 0.0;
   }
 }
-BENCHMARK(BM_HapticLoopJitter)->Arg(1000)->Arg(4000)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+// Args: rate (Hz), SCHED_FIFO priority (0: normal scheduling).
+BENCHMARK(BM_HapticLoopJitter)->Args({1000, 0})->Args({4000, 0})->Args({1000, 80})->Args({4000, 80})->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace vimg

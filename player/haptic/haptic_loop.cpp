@@ -1,5 +1,7 @@
 #include "player/haptic/haptic_loop.hpp"
 
+#include <pthread.h>
+#include <sched.h>
 #include <time.h>
 
 #include <algorithm>
@@ -70,6 +72,11 @@ void HapticLoop::stop() {
 Vec3 HapticLoop::last_sent_N() const { return {sent_x_.load(), sent_y_.load(), sent_z_.load()}; }
 
 void HapticLoop::run() {
+  if (config_.realtime_priority > 0) {
+    sched_param param{};
+    param.sched_priority = std::min(config_.realtime_priority, 99);
+    realtime_ = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0;
+  }
   const auto period_ns = static_cast<std::int64_t>(1e9 / config_.rate_hz);
   const std::int64_t start_ns = now_ns();
   std::int64_t deadline_ns = start_ns;

@@ -21,6 +21,9 @@ namespace vimg {
 struct HapticLoopConfig {
   double rate_hz = 1000.0;  // 100 .. 4000
   HapticCycleConfig cycle;
+  // SCHED_FIFO priority for the loop thread (1..99), or 0 for normal scheduling. If the system
+  // refuses (no CAP_SYS_NICE or rtprio limit), the loop runs at normal priority; see realtime().
+  int realtime_priority = 0;
 };
 
 // Wake-up lateness of the loop against its deadlines, in microseconds.
@@ -52,6 +55,8 @@ class HapticLoop {
   Vec3 last_sent_N() const;
   // Set when a device read or write failed; the loop then stopped after zeroing the force.
   bool failed() const { return failed_.load(); }
+  // True if the loop thread got the requested SCHED_FIFO priority.
+  bool realtime() const { return realtime_.load(); }
   // Valid after stop().
   JitterStats jitter() const;
 
@@ -71,6 +76,7 @@ class HapticLoop {
   std::atomic<bool> stop_requested_{false};
   std::atomic<bool> running_{false};
   std::atomic<bool> failed_{false};
+  std::atomic<bool> realtime_{false};
   std::atomic<std::uint64_t> cycles_{0};
   std::atomic<double> sent_x_{0.0}, sent_y_{0.0}, sent_z_{0.0};
   std::vector<std::uint32_t> histogram_;
