@@ -347,6 +347,13 @@ void EditorApp::frame() {
   ImGui::NewFrame();
 
   draw_menu_bar();
+  if (options_.print_layout) {
+    int wx = 0, wy = 0, ww = 0, wh = 0;
+    SDL_GetWindowPosition(window_, &wx, &wy);
+    SDL_GetWindowSize(window_, &ww, &wh);
+    print_layout("window", static_cast<float>(wx), static_cast<float>(wy), static_cast<float>(ww),
+                 static_cast<float>(wh));
+  }
   const ImGuiIO& io = ImGui::GetIO();
   const float top = ImGui::GetFrameHeight();
   const float W = io.DisplaySize.x;
@@ -656,6 +663,7 @@ void EditorApp::draw_dialogs() {
   if (path_prompt_opening_) {
     ImGui::OpenPopup("File");
     path_prompt_opening_ = false;
+    ++path_prompt_count_;
   }
 
   ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
@@ -737,7 +745,13 @@ void EditorApp::draw_dialogs() {
     ImGui::TextUnformatted(what);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(-1);
-    const bool entered = ImGui::InputText("##path", path_buffer_, sizeof path_buffer_, ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool entered = ImGui::InputText("##path", path_buffer_, sizeof path_buffer_,
+                                          ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+    if (ImGui::IsItemActive()) {  // ready for typing (scripted tests wait for this)
+      const std::string name = "file_prompt" + std::to_string(path_prompt_count_);
+      print_layout(name.c_str(), ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                   ImGui::GetItemRectSize().y);
+    }
     if (path_prompt_ == PathPrompt::open) {
       ImGui::TextDisabled("Recent files and examples:");
       std::vector<std::string> choices = recent_.paths();

@@ -127,6 +127,7 @@ class EditorApp {
   enum class PathPrompt { none, open, save_as, save_gesture };
   PathPrompt path_prompt_ = PathPrompt::none;
   bool path_prompt_opening_ = false;
+  int path_prompt_count_ = 0;
   char path_buffer_[1024] = {};
   PendingAction pending_ = PendingAction::none;
   std::string pending_path_;

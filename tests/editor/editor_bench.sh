@@ -42,8 +42,8 @@ echo "== mouse event to first drive sample, 20 strokes across a row of DOTs"
 pid=$!
 for _ in $(seq 100); do grep -q page_origin "$out/dots.layout" 2>/dev/null && break; sleep 0.1; done
 sleep 1
-wid=$(xdotool search --onlyvisible --name vimg-editor | head -1)
-eval "$(xdotool getwindowgeometry --shell "$wid")"
+X=$(grep '^layout window' "$out/dots.layout" | tail -1 | awk '{print $3}')
+Y=$(grep '^layout window' "$out/dots.layout" | tail -1 | awk '{print $4}')
 line=$(grep '^layout page_origin' "$out/dots.layout" | tail -1)
 ppm=$(echo "$line" | sed 's/.*ppm\([0-9.]*\) .*/\1/')
 ox=$(echo "$line" | awk '{print $3}')

@@ -49,16 +49,16 @@ start() {
   shift
   "$editor" --print-layout --zoom 2 "$@" >"$art/$name.layout" 2>"$art/$name.log" &
   editor_pid=$!
-  local wid=""
-  for _ in $(seq 150); do
-    wid=$(xdotool search --onlyvisible --name 'vimg-editor' 2>/dev/null | head -1 || true)
-    [ -n "$wid" ] && grep -q '^layout page_origin' "$art/$name.layout" && break
+  prompts=0
+  # Generous: on a loaded CI machine a debug build can take many seconds to show its first frame.
+  for _ in $(seq 600); do
+    grep -q '^layout window' "$art/$name.layout" && grep -q '^layout page_origin' "$art/$name.layout" && break
     kill -0 "$editor_pid" 2>/dev/null || { echo "FAIL: the editor exited"; cat "$art/$name.log"; exit 1; }
     sleep 0.1
   done
-  [ -n "$wid" ] || { echo "FAIL: no editor window"; exit 1; }
-  eval "$(xdotool getwindowgeometry --shell "$wid")"
-  WX=$X WY=$Y
+  grep -q '^layout page_origin' "$art/$name.layout" || { echo "FAIL: the editor shows no canvas"; exit 1; }
+  WX=$(grep '^layout window' "$art/$name.layout" | tail -1 | awk '{print $3}')
+  WY=$(grep '^layout window' "$art/$name.layout" | tail -1 | awk '{print $4}')
   local line
   line=$(grep '^layout page_origin' "$art/$name.layout" | tail -1)
   PPM=$(echo "$line" | sed 's/.*ppm\([0-9.]*\) .*/\1/')
@@ -92,8 +92,12 @@ widget() {
   xdotool mousemove $((WX + x + w / 2)) $((WY + y + h / 2)); sleep 0.15
   xdotool click 1; sleep 0.25
 }
+prompts=0
 save_as() {
+  prompts=$((prompts + 1))
   key ctrl+shift+s
+  for _ in $(seq 100); do grep -q "^layout file_prompt$prompts " "$art/$current.layout" && break; sleep 0.1; done
+  grep -q "^layout file_prompt$prompts " "$art/$current.layout" || { echo "FAIL: no file prompt"; shot no-prompt; exit 1; }
   key ctrl+a
   xdotool type --delay 20 "$1"; sleep 0.2
   key Return

@@ -146,8 +146,10 @@ def check_pulse(wav, gesture, cx, cy, r):
     # Live input reaches the renderer only at event times; between events it dead-reckons the
     # finger with its filtered velocity for up to 30 ms (LiveTrackerOptions::max_extrapolation_s),
     # and a loaded GUI thread delivers mouse events in bursts, which can make the estimate overshoot.
-    # So: no drive far from the crossing, and the bulk of the pulse's energy inside it.
-    slack = 0.06
+    # On a loaded machine the GUI thread can stall for tens of milliseconds (a software-rendered
+    # frame), and the events queued meanwhile arrive together. So: no drive farther than 100 ms
+    # from the crossing, and the bulk of the pulse's energy inside it.
+    slack = 0.1
     stray = [i for i in on if not (t_in - slack <= i / rate <= t_out + slack)]
     if stray:
         fail(f"{len(stray)} samples of drive away from the crossing, first at {stray[0] / rate:.4f} s")
