@@ -16,7 +16,7 @@ function(vimg_component name dir)
   endif()
 endfunction()
 
-# vimg_test_dir(NAME DIR LIBS ... [LABELS ...]): one GoogleTest executable of every .cpp in DIR.
+# vimg_test_dir(NAME DIR LIBS ... LABELS unit|threaded|gui): one GoogleTest executable of every .cpp in DIR.
 function(vimg_test_dir name dir)
   cmake_parse_arguments(ARG "" "" "LIBS;LABELS" ${ARGN})
   file(GLOB sources CONFIGURE_DEPENDS ${dir}/*.cpp)
@@ -28,6 +28,11 @@ function(vimg_test_dir name dir)
   target_compile_definitions(${name} PRIVATE
     VIMG_SOURCE_DIR="${PROJECT_SOURCE_DIR}" VIMG_BINARY_DIR="${PROJECT_BINARY_DIR}" VIMG_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/tests/data")
   vimg_warnings(${name})
+  # One label per executable: gtest_discover_tests flattens a label list into separate properties.
+  list(LENGTH ARG_LABELS label_count)
+  if(NOT label_count EQUAL 1)
+    message(FATAL_ERROR "vimg_test_dir(${name}): give exactly one label")
+  endif()
   gtest_discover_tests(${name} DISCOVERY_MODE PRE_TEST DISCOVERY_TIMEOUT 60
     PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT 300)
 endfunction()
