@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "editor/core/gesture_recorder.hpp"
-#include "editor/drive_tap.hpp"
+#include "editor/core/drive_tap.hpp"
 #include "player/drive_sink.hpp"
 #include "player/realtime_renderer.hpp"
 #include "primitives/image.hpp"

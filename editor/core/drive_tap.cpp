@@ -1,4 +1,4 @@
-#include "editor/drive_tap.hpp"
+#include "editor/core/drive_tap.hpp"
 
 #include <algorithm>
 #include <cmath>
