@@ -80,9 +80,11 @@ double ContactMixer::step(std::span<const FingerStep> touching, double time_s, d
       s.pressure = finger->pressure;
       near = Bounds2M::of_segment(s.previous_position_m, s.position_m).intersects(scene_->bounds(c.primitive));
     } else {
-      // The touch has ended: the finger leaves during this step and stays away.
+      // The touch has ended: the finger is gone from the start of this step and stays away. The
+      // whole step lies far off the canvas, so it crosses no primitive on its way out (a path from
+      // the last position could cross a ringing LINE and pluck it again with zero speed).
       const Vec3 away = c.last_position_m + Vec3{kFarAway_m, kFarAway_m, 0.0};
-      s.previous_position_m = c.lifted ? away : c.last_position_m;
+      s.previous_position_m = away;
       s.position_m = away;
       s.pressure = c.last_pressure;
       c.lifted = true;

@@ -141,6 +141,15 @@ TEST(RenderSpec, LineKeepsRingingAfterTheFingerLiftsInsideItsBand) {
   expect_ring_down(r, 0.05, c, c.gain);
 }
 
+TEST(RenderSpec, LiftingElsewhereDoesNotCutARingDownShort) {
+  // The finger crosses the band upwards (leaving it at y = 49 at 0.11 s) and lifts at (30, 45) at
+  // 0.15 s, while the line still rings. Wherever the lifted finger is taken, it must not pluck again.
+  const RingCase c{175, 0.05, 0.4};
+  const auto img = image_of({element("l", line(20, 50, 80, 50, 2, c.frequency_hz, c.damping, c.gain))});
+  const auto r = render(img, gesture_of({line_stroke(30, 60, 30, 45, 100, 120, 0.0)}));
+  expect_ring_down(r, 0.11, c, c.gain);
+}
+
 // ---- 5.6 SURFACE frequency ----
 
 TEST(RenderSpec, SurfaceFrequencyFollowsSpeedOverPeriod) {
