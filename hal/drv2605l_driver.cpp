@@ -210,11 +210,8 @@ void Drv2605lDriver::open(double sample_rate_hz) {
   if (!initialized_ || gone_) {
     initialize();
   }
-  sample_rate_hz_ = sample_rate_hz;
   follower_.configure(sample_rate_hz, profile_.resonance_hz, options_.release_time_s);
-  samples_per_update_ = std::max<std::int64_t>(1, std::llround(sample_rate_hz / options_.update_rate_hz));
-  sample_counter_ = 0;
-  epoch_set_ = false;
+  schedule_.start(sample_rate_hz, options_.update_rate_hz);
   stopped_ = false;
   gone_ = false;
   rest_reported_ = false;
@@ -255,18 +252,9 @@ void Drv2605lDriver::write(std::span<const float> drive, double block_start_time
     }
     return;
   }
-  if (!epoch_set_) {
-    epoch_us_ = clock_.now_us() - std::llround(block_start_time_s * 1e6);
-    epoch_set_ = true;
-  }
-  for (std::size_t i = 0; i < drive.size(); ++i) {
-    follower_.push(drive[i]);
-    if (++sample_counter_ >= samples_per_update_) {
-      sample_counter_ = 0;
-      const double time_s = block_start_time_s + static_cast<double>(i + 1) / sample_rate_hz_;
-      update(epoch_us_ + std::llround(time_s * 1e6));
-    }
-  }
+  schedule_.feed(
+      drive, block_start_time_s, clock_, [this](float x) { follower_.push(x); },
+      [this](std::int64_t time_us) { update(time_us); });
 }
 
 void Drv2605lDriver::update(std::int64_t time_us) {

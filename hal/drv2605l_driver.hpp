@@ -35,6 +35,7 @@
 
 #include "hal/actuator_profile.hpp"
 #include "hal/clock.hpp"
+#include "hal/update_schedule.hpp"
 #include "hal/drv2605l_calibration.hpp"
 #include "hal/envelope_follower.hpp"
 #include "hal/fault_log.hpp"
@@ -121,11 +122,7 @@ class Drv2605lDriver final : public DriveSink {
   std::uint8_t last_period_code_ = 0;
   std::uint8_t pulse_code_ = 0;
   std::int64_t pulse_start_us_ = 0;
-  std::int64_t samples_per_update_ = 4;
-  std::int64_t sample_counter_ = 0;
-  double sample_rate_hz_ = 8000.0;
-  std::int64_t epoch_us_ = 0;
-  bool epoch_set_ = false;
+  UpdateSchedule schedule_;
   std::int64_t last_status_poll_us_ = 0;
   std::int64_t last_reconnect_us_ = 0;
   std::atomic<LoopHint> hint_{LoopHint::automatic};

@@ -100,11 +100,8 @@ void HidHapticController::stop_waveforms() { send_trigger(kOrdinalStop, 0.0, 0, 
 
 void HidHapticController::open(double sample_rate_hz) {
   if (!device_) connect();
-  sample_rate_hz_ = sample_rate_hz;
   follower_.configure(sample_rate_hz, options_.resonance_hz, 0.003);
-  samples_per_update_ = std::max<std::int64_t>(1, std::llround(sample_rate_hz / 1000.0));  // 1 kHz decisions
-  sample_counter_ = 0;
-  epoch_set_ = false;
+  schedule_.start(sample_rate_hz, 1000.0);  // 1 kHz decisions
   active_ = buzzing_ = onset_pending_ = false;
   playing_ = true;
 }
@@ -115,17 +112,9 @@ void HidHapticController::write(std::span<const float> drive, double block_start
     close();
     return;
   }
-  if (!epoch_set_) {
-    epoch_us_ = clock_.now_us() - std::llround(block_start_time_s * 1e6);
-    epoch_set_ = true;
-  }
-  for (std::size_t i = 0; i < drive.size(); ++i) {
-    follower_.push(drive[i]);
-    if (++sample_counter_ >= samples_per_update_) {
-      sample_counter_ = 0;
-      update(epoch_us_ + std::llround((block_start_time_s + static_cast<double>(i + 1) / sample_rate_hz_) * 1e6));
-    }
-  }
+  schedule_.feed(
+      drive, block_start_time_s, clock_, [this](float x) { follower_.push(x); },
+      [this](std::int64_t time_us) { update(time_us); });
 }
 
 void HidHapticController::update(std::int64_t time_us) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "hal/clock.hpp"
+#include "hal/update_schedule.hpp"
 #include "hal/envelope_follower.hpp"
 #include "hal/fault_log.hpp"
 #include "hal/hid_device.hpp"
@@ -74,11 +75,7 @@ class HidHapticController final : public DriveSink {
   std::vector<HidWaveform> waveforms_;
   FaultLog faults_;
   EnvelopeFollower follower_;
-  double sample_rate_hz_ = 8000.0;
-  std::int64_t samples_per_update_ = 40;
-  std::int64_t sample_counter_ = 0;
-  std::int64_t epoch_us_ = 0;
-  bool epoch_set_ = false;
+  UpdateSchedule schedule_;
   bool playing_ = false;
   bool active_ = false;
   bool buzzing_ = false;

@@ -7,13 +7,8 @@ namespace vimg {
 void VectorGuidanceShader::begin_contact(ShaderState& state) const { state.emplace<ProxyState>(); }
 
 Vec3 VectorGuidanceShader::force_N(const InteractionState& interaction, ShaderState& state) const {
-  ProxyState& s = state.get<ProxyState>();
   const Vec3 probe = interaction.position_m;
-  if (!s.placed) {
-    s.proxy_m = probe;
-    s.proxy_velocity_m_per_s = {};
-    s.placed = true;
-  }
+  ProxyState& s = proxy_placed_at(state, probe);
   const Vec3 old_proxy = s.proxy_m;
   const double k = params_.coupling.stiffness_N_per_m;
   const Vec3 field = field_.vector(s.proxy_m);
