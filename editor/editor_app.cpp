@@ -34,7 +34,7 @@ Image new_image() {
   image.width_mm = 100.0;
   image.height_mm = 100.0;
   Meta meta;
-  meta.tool = ToolInfo{"vimg-editor", VIMG_VERSION};
+  meta.tool = ToolInfo{"vimg-editor", VIMG_VERSION, {}};
   image.meta = meta;
   return image;
 }

@@ -23,6 +23,7 @@ struct Point2Mm {
 struct ToolInfo {
   std::string name;
   std::string version;
+  ExtraAttributes extra_attributes;
   friend bool operator==(const ToolInfo&, const ToolInfo&) = default;
 };
 
@@ -40,6 +41,7 @@ struct Meta {
   std::vector<std::string> tags;
   std::optional<ToolInfo> tool;
   std::vector<UnknownElement> unknown_children;
+  ExtraAttributes extra_attributes;
   friend bool operator==(const Meta&, const Meta&) = default;
 };
 
@@ -48,6 +50,7 @@ struct InteractionParams {
   double full_speed_mm_per_s = 100.0;
   double max_deformation_mm = 1.0;
   ExtraAttributes extra_attributes;
+  std::vector<UnknownElement> unknown_children;
   friend bool operator==(const InteractionParams&, const InteractionParams&) = default;
 };
 

@@ -83,6 +83,7 @@ struct Bounds {
 using AttributeNames = std::span<const std::string_view>;
 constexpr std::string_view kRootAttributes[] = {"version", "width", "height"};
 constexpr std::string_view kInteractionAttributes[] = {"mass", "fullSpeed", "maxDeformation"};
+constexpr std::string_view kToolAttributes[] = {"name", "version"};
 constexpr std::string_view kDotAttributes[] = {"id", "x", "y", "radius", "gain"};
 constexpr std::string_view kLineAttributes[] = {"id", "x1", "y1", "x2", "y2", "width", "frequency", "damping", "gain"};
 constexpr std::string_view kRectAttributes[] = {"id", "shape", "x", "y", "width", "height", "period", "relief", "pattern", "gain"};
@@ -360,7 +361,7 @@ class Reader {
 
   Meta read_meta(const XMLElement& e) {
     Meta meta;
-    collect_ignored_attributes(e);
+    meta.extra_attributes = gather(e, {});
     for (const XMLNode* node = e.FirstChild(); node != nullptr; node = node->NextSibling()) {
       const XMLElement* c = node->ToElement();
       if (c == nullptr) {
@@ -395,12 +396,7 @@ class Reader {
         if (tool_version == nullptr) error(c->GetLineNum(), "<tool> is missing required attribute 'version'");
         tool.name = tool_name ? tool_name : "";
         tool.version = tool_version ? tool_version : "";
-        for (const XMLAttribute* a = c->FirstAttribute(); a != nullptr; a = a->Next()) {
-          const std::string_view n = a->Name();
-          if (n != "name" && n != "version") {
-            warning(a->GetLineNum(), "unknown attribute '" + std::string(n) + "' on <tool> is ignored");
-          }
-        }
+        tool.extra_attributes = gather(*c, kToolAttributes);
         meta.tool = tool;
       } else {
         warning(c->GetLineNum(), "unknown element " + tag(*c) + " in <meta> kept as is");
@@ -418,7 +414,8 @@ class Reader {
     p.max_deformation_mm = number(e, "maxDeformation", Range::positive, InteractionParams{}.max_deformation_mm);
     for (const XMLNode* node = e.FirstChild(); node != nullptr; node = node->NextSibling()) {
       if (const XMLElement* c = node->ToElement()) {
-        warning(c->GetLineNum(), "element " + tag(*c) + " inside <interaction> is ignored");
+        warning(c->GetLineNum(), "unknown element " + tag(*c) + " in <interaction> kept as is");
+        p.unknown_children.push_back(UnknownElement{print_verbatim(*c)});
       } else {
         note_text(*node, e);
       }

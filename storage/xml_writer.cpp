@@ -45,7 +45,14 @@ class Writer {
       num("fullSpeed", p.full_speed_mm_per_s);
       num("maxDeformation", p.max_deformation_mm);
       extras(p.extra_attributes);
-      out_ += "/>\n";
+      if (p.unknown_children.empty()) {
+        out_ += "/>\n";
+      } else {
+        out_ += ">\n";
+        for (const auto& u : p.unknown_children) unknown(2, u);
+        indent(1);
+        out_ += "</interaction>\n";
+      }
     }
     for (const Element& e : image_.children) write_element(e, 1);
     out_ += "</vibroimage>\n";
@@ -106,7 +113,9 @@ class Writer {
 
   void write_meta(const Meta& meta) {
     indent(1);
-    out_ += "<meta>\n";
+    out_ += "<meta";
+    extras(meta.extra_attributes);
+    out_ += ">\n";
     if (meta.title) text_element(2, "title", *meta.title);
     if (meta.author) text_element(2, "author", *meta.author);
     if (meta.description) text_element(2, "description", *meta.description);
@@ -117,6 +126,7 @@ class Writer {
       out_ += "<tool";
       attr("name", meta.tool->name);
       attr("version", meta.tool->version);
+      extras(meta.tool->extra_attributes);
       out_ += "/>\n";
     }
     for (const auto& u : meta.unknown_children) unknown(2, u);

@@ -109,7 +109,7 @@ class RandomImages {
     if (chance(0.5)) m.description = text();
     if (chance(0.4)) m.created = "2026-11-22T04:30:00Z";
     for (int i = pick(0, 3); i > 0; --i) m.tags.push_back(text());
-    if (chance(0.5)) m.tool = ToolInfo{"gen" + std::to_string(pick(0, 9)), text()};
+    if (chance(0.5)) m.tool = ToolInfo{"gen" + std::to_string(pick(0, 9)), text(), {}};
     if (chance(0.3)) m.unknown_children.push_back(UnknownElement{"<x:licence kind=\"cc\">CC &amp; more</x:licence>"});
     return m;
   }

@@ -137,6 +137,28 @@ TEST(XmlRules, UnknownAttributesAreKeptInOrderWithWarnings) {
   EXPECT_EQ(r.diagnostics[0].to_string(), "f.vimg:3: warning: unknown attribute 'zeta' on <dot> kept as is");
 }
 
+TEST(XmlRules, UnknownContentOfMetaToolAndInteractionSurvivesTheRoundTrip) {
+  const LoadResult r = parse_image_xml(
+      document("<meta lang=\"de\"><title>T</title><tool name=\"x\" version=\"2\" build=\"7\"/></meta>\n"
+               "<interaction mass=\"0.02\"><finger model=\"soft\"/></interaction>\n"),
+      "f.vimg");
+  ASSERT_TRUE(r.ok());
+  ASSERT_EQ(r.diagnostics.size(), 3u);
+  EXPECT_EQ(r.diagnostics[0].to_string(), "f.vimg:3: warning: unknown attribute 'lang' on <meta> kept as is");
+  EXPECT_EQ(r.diagnostics[1].to_string(), "f.vimg:3: warning: unknown attribute 'build' on <tool> kept as is");
+  EXPECT_EQ(r.diagnostics[2].to_string(), "f.vimg:4: warning: unknown element <finger> in <interaction> kept as is");
+  const Image& image = *r.image;
+  EXPECT_EQ(image.meta->extra_attributes, (ExtraAttributes{{"lang", "de"}}));
+  EXPECT_EQ(image.meta->tool->extra_attributes, (ExtraAttributes{{"build", "7"}}));
+  ASSERT_EQ(image.interaction->unknown_children.size(), 1u);
+  EXPECT_EQ(image.interaction->unknown_children[0].xml, "<finger model=\"soft\"/>");
+  const std::string xml = write_image_xml(image);
+  const LoadResult again = parse_image_xml(xml, "again.vimg");
+  ASSERT_TRUE(again.ok());
+  EXPECT_EQ(*again.image, image);
+  EXPECT_EQ(write_image_xml(*again.image), xml);
+}
+
 TEST(XmlRules, WarningsDoNotStopLoading) {
   const LoadResult r = parse_image_xml(document("<dot x=\"500\" y=\"1\"/>\n<blob/>\n"), "f.vimg");
   ASSERT_TRUE(r.ok());
