@@ -81,7 +81,7 @@ key() { xdotool key "$@"; sleep 0.25; }
 # widget NAME: clicks a widget whose layout the editor printed.
 widget() {
   local line=""
-  for _ in $(seq 50); do
+  for _ in $(seq 200); do
     line=$(grep "^layout $1 " "$art/$current.layout" | tail -1 || true)
     [ -n "$line" ] && break
     sleep 0.1
@@ -96,12 +96,12 @@ prompts=0
 save_as() {
   prompts=$((prompts + 1))
   key ctrl+shift+s
-  for _ in $(seq 100); do grep -q "^layout file_prompt$prompts " "$art/$current.layout" && break; sleep 0.1; done
+  for _ in $(seq 300); do grep -q "^layout file_prompt$prompts " "$art/$current.layout" && break; sleep 0.1; done
   grep -q "^layout file_prompt$prompts " "$art/$current.layout" || { echo "FAIL: no file prompt"; shot no-prompt; exit 1; }
   key ctrl+a
   xdotool type --delay 20 "$1"; sleep 0.2
   key Return
-  for _ in $(seq 50); do [ -s "$1" ] && return 0; sleep 0.1; done
+  for _ in $(seq 200); do [ -s "$1" ] && return 0; sleep 0.1; done
   echo "FAIL: $1 was not saved"; cat "$art/$current.log"; exit 1
 }
 shot() { import -window root "$art/$1.png"; }
@@ -186,7 +186,7 @@ wait "$editor_pid" 2>/dev/null || true
 editor_pid=""
 current=recover
 start recover "$art/recover_me.vimg" --output none --recovery-dir "$art/recovery" --autosave-interval 1
-for _ in $(seq 50); do grep -q '^layout recover_dialog' "$art/recover.layout" && break; sleep 0.1; done
+for _ in $(seq 200); do grep -q '^layout recover_dialog' "$art/recover.layout" && break; sleep 0.1; done
 grep -q '^layout recover_dialog' "$art/recover.layout" || { echo "FAIL: no recovery offered"; shot recover-missing; exit 1; }
 shot recovery-offered
 key Return
