@@ -65,6 +65,7 @@ class RandomImages {
       p.full_speed_mm_per_s = uniform(1.0, 1000.0);
       p.max_deformation_mm = uniform(0.01, 5.0);
       if (chance(0.3)) p.extra_attributes.emplace_back("x:note", text());
+      if (chance(0.3)) p.unknown_children.push_back(UnknownElement{"<x:finger model=\"soft\"/>"});
       image.interaction = p;
     }
     if (chance(0.3)) image.extra_attributes.emplace_back("x:layer", text());
@@ -110,6 +111,8 @@ class RandomImages {
     if (chance(0.4)) m.created = "2026-11-22T04:30:00Z";
     for (int i = pick(0, 3); i > 0; --i) m.tags.push_back(text());
     if (chance(0.5)) m.tool = ToolInfo{"gen" + std::to_string(pick(0, 9)), text(), {}};
+    if (m.tool && chance(0.3)) m.tool->extra_attributes.emplace_back("x:build", text());
+    if (chance(0.3)) m.extra_attributes.emplace_back("x:lang", text());
     if (chance(0.3)) m.unknown_children.push_back(UnknownElement{"<x:licence kind=\"cc\">CC &amp; more</x:licence>"});
     return m;
   }
