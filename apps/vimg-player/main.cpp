@@ -137,6 +137,7 @@ int run(const PlayerArgs& args) {
 
   RealtimeOptions realtime;
   realtime.sample_rate_hz = args.rate_hz;
+  realtime.realtime_priority = args.realtime_priority;
   RealtimeRenderer renderer(output->sink(), realtime);
   renderer.set_scene(scene);
   if (auto error = renderer.start()) {

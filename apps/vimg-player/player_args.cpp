@@ -11,6 +11,10 @@ bool parse_double(const std::string& text, double& value) {
   const auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), value);
   return !text.empty() && status == std::errc() && end == text.data() + text.size() && std::isfinite(value);
 }
+bool parse_int(const std::string& text, int& value) {
+  const auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return !text.empty() && status == std::errc() && end == text.data() + text.size();
+}
 }  // namespace
 
 ArgsResult parse_player_args(const std::vector<std::string>& arguments) {
@@ -42,6 +46,12 @@ ArgsResult parse_player_args(const std::vector<std::string>& arguments) {
       if (!value(text) || !parse_double(text, args.rate_hz) || args.rate_hz < 1.0 || args.rate_hz > 48000.0) {
         return {std::nullopt, "--rate needs a number of Hz in 1..48000"};
       }
+    } else if (argument == "--realtime-priority") {
+      int priority = -1;
+      if (!value(text) || !parse_int(text, priority) || priority < 0 || priority > 99) {
+        return {std::nullopt, "--realtime-priority needs a whole number in 0..99"};
+      }
+      args.realtime_priority = priority;
     } else if (argument == "--window") {
       int width = 0, height = 0;
       if (!value(text) || std::sscanf(text.c_str(), "%dx%d", &width, &height) != 2 || width < 64 || height < 64) {

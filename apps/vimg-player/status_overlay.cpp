@@ -11,7 +11,8 @@ void StatusOverlay::draw(SDL_Renderer* renderer, const LoopStats& stats, std::ui
   char line[160];
   std::vector<std::string> lines;
   lines.push_back("OUTPUT " + output_);
-  std::snprintf(line, sizeof line, "LOOP %.0f HZ  JITTER P50 %.2f MS  P99 %.2f MS  MAX %.2f MS", stats.measured_rate_hz,
+  std::snprintf(line, sizeof line, "LOOP %.0f HZ %s  JITTER P50 %.2f MS  P99 %.2f MS  MAX %.2f MS",
+                stats.measured_rate_hz, stats.realtime_priority ? "SCHED_FIFO" : "NORMAL PRIORITY",
                 stats.jitter_p50_s * 1e3, stats.jitter_p99_s * 1e3, stats.jitter_max_s * 1e3);
   lines.emplace_back(line);
   std::snprintf(line, sizeof line, "UNDERRUNS %llu  OVERRUNS %llu  DROPPED %llu  CONTACTS %llu",
