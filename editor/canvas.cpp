@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -63,6 +64,18 @@ void surface_vertical_spans(const Surface& s, double x, std::vector<std::pair<do
   std::swap(t.rx_mm, t.ry_mm);
   for (Point2Mm& p : t.points) std::swap(p.x_mm, p.y_mm);
   surface_spans(t, x, spans);
+}
+
+// The eight resize handles of a selection box, clockwise from the top-left corner; handle i
+// moves the box's edges as Canvas's resize code expects.
+std::array<ImVec2, 8> handle_positions_px(const Point2Px& top_left, const Point2Px& bottom_right) {
+  const float xs[3] = {top_left.x, (top_left.x + bottom_right.x) / 2, bottom_right.x};
+  const float ys[3] = {top_left.y, (top_left.y + bottom_right.y) / 2, bottom_right.y};
+  static constexpr int kHx[8] = {0, 1, 2, 2, 2, 1, 0, 0};
+  static constexpr int kHy[8] = {0, 0, 0, 1, 2, 2, 2, 1};
+  std::array<ImVec2, 8> handles;
+  for (int i = 0; i < 8; ++i) handles[static_cast<std::size_t>(i)] = ImVec2(xs[kHx[i]], ys[kHy[i]]);
+  return handles;
 }
 
 }  // namespace
@@ -265,14 +278,7 @@ void EditorApp::draw_selection(ImDrawList* dl) {
     }
   }
   if (auto b = doc_.selection_bounds(); b && tool_ == Tool::select && !play_mode_) {
-    const Point2Px a = view_.to_px({b->x0_mm, b->y0_mm});
-    const Point2Px c = view_.to_px({b->x1_mm, b->y1_mm});
-    const float xs[3] = {a.x, (a.x + c.x) / 2, c.x};
-    const float ys[3] = {a.y, (a.y + c.y) / 2, c.y};
-    static constexpr int kHx[8] = {0, 1, 2, 2, 2, 1, 0, 0};
-    static constexpr int kHy[8] = {0, 0, 0, 1, 2, 2, 2, 1};
-    for (int i = 0; i < 8; ++i) {
-      const ImVec2 h(xs[kHx[i]], ys[kHy[i]]);
+    for (const ImVec2& h : handle_positions_px(view_.to_px({b->x0_mm, b->y0_mm}), view_.to_px({b->x1_mm, b->y1_mm}))) {
       dl->AddRectFilled(ImVec2(h.x - kHandlePx, h.y - kHandlePx), ImVec2(h.x + kHandlePx, h.y + kHandlePx), kSelection);
       dl->AddRect(ImVec2(h.x - kHandlePx, h.y - kHandlePx), ImVec2(h.x + kHandlePx, h.y + kHandlePx),
                   IM_COL32(40, 120, 255, 255));
@@ -458,14 +464,10 @@ void EditorApp::canvas_mouse_drawing_mode() {
       // A handle of the selection?
       resize_handle_ = -1;
       if (auto b = doc_.selection_bounds()) {
-        const Point2Px a = view_.to_px({b->x0_mm, b->y0_mm});
-        const Point2Px c = view_.to_px({b->x1_mm, b->y1_mm});
-        const float xs[3] = {a.x, (a.x + c.x) / 2, c.x};
-        const float ys[3] = {a.y, (a.y + c.y) / 2, c.y};
-        static constexpr int kHx[8] = {0, 1, 2, 2, 2, 1, 0, 0};
-        static constexpr int kHy[8] = {0, 0, 0, 1, 2, 2, 2, 1};
+        const auto handles = handle_positions_px(view_.to_px({b->x0_mm, b->y0_mm}), view_.to_px({b->x1_mm, b->y1_mm}));
         for (int i = 0; i < 8; ++i) {
-          if (std::abs(io.MousePos.x - xs[kHx[i]]) <= kHandlePx + 1 && std::abs(io.MousePos.y - ys[kHy[i]]) <= kHandlePx + 1) {
+          const ImVec2& h = handles[static_cast<std::size_t>(i)];
+          if (std::abs(io.MousePos.x - h.x) <= kHandlePx + 1 && std::abs(io.MousePos.y - h.y) <= kHandlePx + 1) {
             resize_handle_ = i;
             resize_from_ = *b;
           }
