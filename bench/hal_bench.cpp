@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "hal/actuator_profile.hpp"
-#include "hal/clock.hpp"
+#include "realtime/clock.hpp"
 #include "hal/drv2605l_driver.hpp"
 #include "hal/drv2605l_emulator.hpp"
 #include "hal/drv2605l_registers.hpp"

@@ -12,7 +12,7 @@
 #include "player/contact_mixer.hpp"
 #include "player/realtime_renderer.hpp"
 #include "player/scene.hpp"
-#include "player/soft_limiter.hpp"
+#include "realtime/soft_limit.hpp"
 #include "primitives/image.hpp"
 
 namespace {
@@ -120,7 +120,7 @@ class LatencySink final : public DriveSink {
     bool nonzero = false;
     for (float v : drive) nonzero |= v != 0.0f;
     if (nonzero && armed.load(std::memory_order_acquire)) {
-      seen_s.store(monotonic_time_s(), std::memory_order_release);
+      seen_s.store(monotonic_s(), std::memory_order_release);
       armed.store(false, std::memory_order_release);
     }
     silent.store(!nonzero, std::memory_order_release);
@@ -155,7 +155,7 @@ void BM_EventToFirstSampleLatency(benchmark::State& state) {
     while (!sink.silent.load()) std::this_thread::sleep_for(std::chrono::microseconds(200));
     std::this_thread::sleep_for(std::chrono::microseconds(wait_us(rng)));  // random phase in the block
     sink.armed.store(true);
-    const double t0 = monotonic_time_s();
+    const double t0 = monotonic_s();
     // A moving touch: down then a move 2 ms later in time (velocity 100 mm/s), both stamped now.
     TouchEvent down{t0 - 0.002, 0, TouchPhase::down, 50.0, 50.0, 1.0};
     TouchEvent move{t0, 0, TouchPhase::move, 50.2, 50.0, 1.0};
@@ -165,7 +165,7 @@ void BM_EventToFirstSampleLatency(benchmark::State& state) {
     const double latency = sink.seen_s.load() - t0;
     latencies.push_back(latency);
     state.SetIterationTime(latency);
-    TouchEvent up{monotonic_time_s(), 0, TouchPhase::up, 50.2, 50.0, 1.0};
+    TouchEvent up{monotonic_s(), 0, TouchPhase::up, 50.2, 50.0, 1.0};
     r.push_event(up);
   }
   r.stop();
@@ -200,11 +200,11 @@ void BM_RealtimeLoopJitter(benchmark::State& state) {
       state.SkipWithError("cannot start");
       return;
     }
-    const double t0 = monotonic_time_s();
+    const double t0 = monotonic_s();
     for (int f = 0; f < 10; ++f) r.push_event({t0, f, TouchPhase::down, 20.0 + 40 * f, 100.0, 1.0});
     for (int k = 1; k <= 360; ++k) {
       std::this_thread::sleep_for(std::chrono::microseconds(8333));
-      const double t = monotonic_time_s();
+      const double t = monotonic_s();
       for (int f = 0; f < 10; ++f)
         r.push_event({t, f, TouchPhase::move, 20.0 + 40 * f + 100.0 * (t - t0), 100.0 + 10 * f, 1.0});
     }

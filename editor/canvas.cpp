@@ -288,7 +288,7 @@ void EditorApp::draw_selection(ImDrawList* dl) {
 
 void EditorApp::draw_play_overlay(ImDrawList* dl) {
   if (!play_) return;
-  const double now = monotonic_time_s();
+  const double now = monotonic_s();
   play_->forget_trail_older_than(now - 1.5);
   const auto& trail = play_->trail();
   for (std::size_t i = 1; i < trail.size(); ++i) {

@@ -123,10 +123,10 @@ int EditorApp::run() {
   if (options_.play_at_start) set_play_mode(true);
 
   std::vector<double> frame_times_s;
-  double next_frame_s = monotonic_time_s();
+  double next_frame_s = monotonic_s();
   int frames = 0;
   while (!quit_) {
-    const double t0 = monotonic_time_s();
+    const double t0 = monotonic_s();
     frame();
     ++frames;
     // Key releases held back from the frame that saw the press (see dispatch()).
@@ -135,17 +135,17 @@ int EditorApp::run() {
     held_events_.clear();
     for (const SDL_Event& e : held) dispatch(e);
     if (options_.benchmark_frames > 0) {
-      frame_times_s.push_back(monotonic_time_s() - t0);
+      frame_times_s.push_back(monotonic_s() - t0);
       SDL_Event e;
       while (SDL_PollEvent(&e)) dispatch(e);
       if (frames >= options_.benchmark_frames) break;
       continue;
     }
     next_frame_s += kFramePeriodS;
-    double now = monotonic_time_s();
+    double now = monotonic_s();
     if (next_frame_s < now) next_frame_s = now + kFramePeriodS;
     // Handle events the moment they arrive (playing mode pushes touches from here), then draw.
-    while (!quit_ && (now = monotonic_time_s()) < next_frame_s) {
+    while (!quit_ && (now = monotonic_s()) < next_frame_s) {
       SDL_Event e;
       const int wait_ms = std::max(1, static_cast<int>((next_frame_s - now) * 1000.0));
       if (SDL_WaitEventTimeout(&e, wait_ms)) {
@@ -210,7 +210,7 @@ void EditorApp::handle_event(const SDL_Event& event) {
 
 void EditorApp::handle_play_input(const SDL_Event& event) {
   if (!play_ || !play_->playing()) return;
-  const double now = monotonic_time_s();
+  const double now = monotonic_s();
   auto inside = [&](float x, float y) {
     return x >= canvas_x_ && y >= canvas_y_ && x < canvas_x_ + canvas_w_ && y < canvas_y_ + canvas_h_;
   };
@@ -601,7 +601,7 @@ void EditorApp::report_error(std::string message) {
 
 void EditorApp::autosave_if_due() {
   if (recovery_prompt_opening_ || recovery_prompt_active_) return;  // the user decides first
-  const double now = monotonic_time_s();
+  const double now = monotonic_s();
   if (!doc_.dirty() || doc_.in_gesture()) return;
   if (doc_.change_count() == autosaved_change_ || now - last_autosave_s_ < options_.autosave_interval_s) return;
   if (auto error = recovery_.save(doc_.image(), document_path_)) {

@@ -356,7 +356,7 @@ void EditorApp::draw_document_properties() {
 
 void EditorApp::refresh_validation() {
   if (validated_change_ == doc_.change_count()) return;
-  const double now = monotonic_time_s();
+  const double now = monotonic_s();
   if (validation_due_s_ == 0.0) validation_due_s_ = now + 0.3;  // wait for a pause in editing
   if (now < validation_due_s_ || doc_.in_gesture()) return;
   validation_due_s_ = 0.0;

@@ -31,7 +31,7 @@ std::optional<std::string> PlaySession::start(const Image& image) {
   options.sample_rate_hz = sample_rate_hz_;
   renderer_ = std::make_unique<RealtimeRenderer>(*tap_, options);
   if (!renderer_->set_scene(compile_scene(image))) return "the player refused the scene";
-  start_time_s_ = monotonic_time_s();
+  start_time_s_ = monotonic_s();
   std::optional<std::string> start_error;
   try {
     start_error = renderer_->start();
@@ -54,7 +54,7 @@ void PlaySession::update(const Image& image) {
 void PlaySession::stop() {
   if (!renderer_) return;
   // Lift every finger so the output ends at rest.
-  const double now = monotonic_time_s();
+  const double now = monotonic_s();
   for (int i = 0; i < kMaxFingers; ++i) {
     if (fingers_[i]) touch(i, TouchPhase::up, fingers_[i]->x_mm, fingers_[i]->y_mm, now);
   }

@@ -37,7 +37,7 @@ class PlaySession {
   void stop();
   bool playing() const { return renderer_ && renderer_->running(); }
 
-  // Input from the GUI thread; time on the renderer's clock (monotonic_time_s()).
+  // Input from the GUI thread; time on the renderer's clock (monotonic_s()).
   void touch(int finger, TouchPhase phase, double x_mm, double y_mm, double time_s);
 
   // Fingers currently down, by finger index: their last position.

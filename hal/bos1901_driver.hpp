@@ -12,7 +12,7 @@
 #include <cstdint>
 
 #include "hal/actuator_profile.hpp"
-#include "hal/clock.hpp"
+#include "realtime/clock.hpp"
 #include "hal/fault_log.hpp"
 #include "hal/spi_bus.hpp"
 #include "player/drive_sink.hpp"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "hal/clock.hpp"
+#include "realtime/clock.hpp"
 #include "hal/spi_bus.hpp"
 
 namespace vimg {

@@ -34,7 +34,7 @@
 #include <string>
 
 #include "hal/actuator_profile.hpp"
-#include "hal/clock.hpp"
+#include "realtime/clock.hpp"
 #include "hal/update_schedule.hpp"
 #include "hal/drv2605l_calibration.hpp"
 #include "hal/envelope_follower.hpp"

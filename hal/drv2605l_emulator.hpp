@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "hal/clock.hpp"
+#include "realtime/clock.hpp"
 #include "hal/emulated_i2c_bus.hpp"
 #include "hal/gpio_output.hpp"
 

@@ -1,11 +1,12 @@
 #pragma once
 // Faults seen on the real-time thread, handed to the UI thread without locks or allocation:
-// a single-producer/single-consumer ring of small plain records. describe() makes the text later.
-#include <array>
+// the SPSC ring of small plain records. describe() makes the text later.
 #include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
+
+#include "realtime/spsc_ring.hpp"
 
 namespace vimg {
 
@@ -31,32 +32,14 @@ class FaultLog {
  public:
   // Producer side (one thread). Drops the event when the ring is full and counts it.
   void push(FaultEvent event) noexcept {
-    const auto head = head_.load(std::memory_order_relaxed);
-    const auto next = (head + 1) % kCapacity;
-    if (next == tail_.load(std::memory_order_acquire)) {
-      dropped_.fetch_add(1, std::memory_order_relaxed);
-      return;
-    }
-    events_[head] = event;
-    head_.store(next, std::memory_order_release);
+    if (!ring_.push(event)) dropped_.fetch_add(1, std::memory_order_relaxed);
   }
   // Consumer side (one thread).
-  std::optional<FaultEvent> pop() noexcept {
-    const auto tail = tail_.load(std::memory_order_relaxed);
-    if (tail == head_.load(std::memory_order_acquire)) {
-      return std::nullopt;
-    }
-    const FaultEvent event = events_[tail];
-    tail_.store((tail + 1) % kCapacity, std::memory_order_release);
-    return event;
-  }
+  std::optional<FaultEvent> pop() noexcept { return ring_.pop(); }
   std::uint64_t dropped() const noexcept { return dropped_.load(std::memory_order_relaxed); }
 
  private:
-  static constexpr std::size_t kCapacity = 64;
-  std::array<FaultEvent, kCapacity> events_{};
-  std::atomic<std::size_t> head_{0};
-  std::atomic<std::size_t> tail_{0};
+  SpscRing<FaultEvent> ring_{64};
   std::atomic<std::uint64_t> dropped_{0};
 };
 

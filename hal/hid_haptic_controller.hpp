@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "hal/clock.hpp"
+#include "realtime/clock.hpp"
 #include "hal/update_schedule.hpp"
 #include "hal/envelope_follower.hpp"
 #include "hal/fault_log.hpp"

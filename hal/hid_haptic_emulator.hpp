@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "hal/clock.hpp"
+#include "realtime/clock.hpp"
 #include "hal/hid_device.hpp"
 #include "hal/hid_haptics.hpp"
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "hal/bos1901_driver.hpp"
-#include "hal/clock.hpp"
+#include "realtime/clock.hpp"
 #include "hal/drv2605l_driver.hpp"
 #include "hal/hid_haptic_controller.hpp"
 #include "hal/sdl_audio_sink.hpp"

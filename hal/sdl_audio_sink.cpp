@@ -60,7 +60,7 @@ void SdlAudioSink::open(double sample_rate_hz) {
     while (buffer_frames < 4096 && buffer_frames * 1.5 < sample_rate_hz * 0.008) buffer_frames *= 2;
   }
   ring_frames_ = options_.ring_frames > 0 ? options_.ring_frames : 4 * buffer_frames;
-  ring_ = std::make_unique<SampleRing>(static_cast<std::size_t>(ring_frames_));
+  ring_ = std::make_unique<SpscRing<float>>(static_cast<std::size_t>(ring_frames_));
   SDL_AudioSpec wanted{};
   wanted.freq = static_cast<int>(std::lround(sample_rate_hz));
   wanted.format = AUDIO_F32SYS;
@@ -88,7 +88,7 @@ void SdlAudioSink::open(double sample_rate_hz) {
 void SdlAudioSink::callback(void* self_pointer, std::uint8_t* stream, int length) {
   auto& self = *static_cast<SdlAudioSink*>(self_pointer);
   const std::span<float> out(reinterpret_cast<float*>(stream), static_cast<std::size_t>(length) / sizeof(float));
-  const std::size_t got = self.ring_->pop(out);
+  const std::size_t got = self.ring_->pop_some(out);
   for (std::size_t i = got; i < out.size(); ++i) out[i] = 0.0f;
   if (got < out.size() && self.started_.load(std::memory_order_relaxed)) {
     self.underruns_.fetch_add(1, std::memory_order_relaxed);
@@ -104,7 +104,7 @@ void SdlAudioSink::write(std::span<const float> drive, double) {
     return;
   }
   while (!drive.empty()) {
-    const std::size_t pushed = ring_->push(drive);
+    const std::size_t pushed = ring_->push_some(drive);
     drive = drive.subspan(pushed);
     if (pushed > 0) started_.store(true, std::memory_order_relaxed);
     if (!drive.empty()) {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "hal/sample_ring.hpp"
+#include "realtime/spsc_ring.hpp"
 #include "player/drive_sink.hpp"
 
 namespace vimg {
@@ -44,7 +44,7 @@ class SdlAudioSink final : public DriveSink {
   static void callback(void* self, std::uint8_t* stream, int length);
 
   SdlAudioOptions options_;
-  std::unique_ptr<SampleRing> ring_;
+  std::unique_ptr<SpscRing<float>> ring_;
   std::uint32_t device_ = 0;
   bool subsystem_ = false;
   double sample_rate_hz_ = 0.0;

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <span>
 
-#include "hal/clock.hpp"
+#include "realtime/clock.hpp"
 
 namespace vimg {
 

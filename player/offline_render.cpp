@@ -6,7 +6,7 @@
 
 #include "player/contact_mixer.hpp"
 #include "player/gesture_playback.hpp"
-#include "player/soft_limiter.hpp"
+#include "realtime/soft_limit.hpp"
 
 namespace vimg {
 

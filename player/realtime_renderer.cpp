@@ -1,5 +1,7 @@
 #include "player/realtime_renderer.hpp"
 
+#include "realtime/clock.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -10,7 +12,7 @@
 #include <sched.h>
 
 #include "player/contact_mixer.hpp"
-#include "player/soft_limiter.hpp"
+#include "realtime/soft_limit.hpp"
 
 namespace vimg {
 
@@ -21,20 +23,6 @@ constexpr std::size_t kRetiredQueueCapacity = 16;
 constexpr std::size_t kMaxScenesInFlight = 8;  // < kRetiredQueueCapacity, so retiring never fails
 constexpr double kJitterBucket_s = 10e-6;
 constexpr double kRateWindow_s = 0.5;
-
-std::int64_t now_ns() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1000000000 + ts.tv_nsec;
-}
-
-void sleep_until_ns(std::int64_t deadline_ns) {
-  timespec ts{};
-  ts.tv_sec = static_cast<time_t>(deadline_ns / 1000000000);
-  ts.tv_nsec = static_cast<long>(deadline_ns % 1000000000);
-  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
-  }
-}
 
 }  // namespace
 
@@ -155,7 +143,7 @@ void RealtimeRenderer::run() {
   }
   const double rate = options_.sample_rate_hz;
   const double block_s = static_cast<double>(block_samples_) / rate;
-  const std::int64_t start_ns = now_ns();
+  const std::int64_t start_ns = monotonic_ns();
   const double start_s = static_cast<double>(start_ns) * 1e-9;
   std::uint64_t k = 0;
   std::int64_t window_start_ns = start_ns;
@@ -163,7 +151,7 @@ void RealtimeRenderer::run() {
   while (!stop_requested_.load(std::memory_order_acquire)) {
     const auto deadline_ns = start_ns + static_cast<std::int64_t>(std::llround(static_cast<double>(k) * block_s * 1e9));
     sleep_until_ns(deadline_ns);
-    const std::int64_t woke_ns = now_ns();
+    const std::int64_t woke_ns = monotonic_ns();
     const double late_s = static_cast<double>(woke_ns - deadline_ns) * 1e-9;
     const auto bucket = std::min<std::size_t>(kJitterBuckets - 1, static_cast<std::size_t>(std::max(0.0, late_s) / kJitterBucket_s));
     jitter_histogram_[bucket].fetch_add(1, std::memory_order_relaxed);
@@ -175,7 +163,7 @@ void RealtimeRenderer::run() {
     blocks_.fetch_add(1, std::memory_order_relaxed);
 
     window_samples += block_samples_;
-    const std::int64_t after_ns = now_ns();
+    const std::int64_t after_ns = monotonic_ns();
     if (static_cast<double>(after_ns - window_start_ns) * 1e-9 >= kRateWindow_s) {
       measured_rate_hz_.store(static_cast<double>(window_samples) / (static_cast<double>(after_ns - window_start_ns) * 1e-9),
                               std::memory_order_relaxed);

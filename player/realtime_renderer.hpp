@@ -20,7 +20,7 @@
 #include "player/drive_sink.hpp"
 #include "player/live_tracker.hpp"
 #include "player/scene.hpp"
-#include "player/spsc_queue.hpp"
+#include "realtime/spsc_ring.hpp"
 #include "player/touch_event.hpp"
 
 namespace vimg {
@@ -86,9 +86,9 @@ class RealtimeRenderer {
   std::atomic<bool> running_{false};
   std::atomic<bool> stop_requested_{false};
 
-  SpscQueue<TouchEvent> events_;
-  SpscQueue<const Scene*> scene_in_;
-  SpscQueue<const Scene*> scene_out_;
+  SpscRing<TouchEvent> events_;
+  SpscRing<const Scene*> scene_in_;
+  SpscRing<const Scene*> scene_out_;
   std::vector<std::shared_ptr<const Scene>> owned_scenes_;  // control thread only
 
   // Render thread state (preallocated).

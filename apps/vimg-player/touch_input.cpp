@@ -5,7 +5,7 @@ namespace vimg::player_app {
 TouchEvent TouchInput::make(int finger, TouchPhase phase, double x_px, double y_px, double pressure) {
   where_px_[static_cast<std::size_t>(finger)] = {static_cast<float>(x_px), static_cast<float>(y_px)};
   TouchEvent touch;
-  touch.time_s = monotonic_time_s();
+  touch.time_s = monotonic_s();
   touch.finger = finger;
   touch.phase = phase;
   touch.x_mm = view_.to_x_mm(x_px);

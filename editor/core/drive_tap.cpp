@@ -41,7 +41,7 @@ void DriveTap::write(std::span<const float> drive, double block_start_time_s) {
   if (was_silent_ && !silent) {
     const std::size_t n = latency_count_.load(std::memory_order_relaxed);
     if (n < kMaxLatencies) {
-      latencies_[n].store(monotonic_time_s() - last_event_time_s_.load(std::memory_order_acquire),
+      latencies_[n].store(monotonic_s() - last_event_time_s_.load(std::memory_order_acquire),
                           std::memory_order_relaxed);
       latency_count_.store(n + 1, std::memory_order_release);
     }

@@ -1,5 +1,7 @@
 #include "player/haptic/haptic_loop.hpp"
 
+#include "realtime/clock.hpp"
+
 #include <pthread.h>
 #include <sched.h>
 #include <time.h>
@@ -8,23 +10,6 @@
 #include <cerrno>
 
 namespace vimg {
-namespace {
-
-std::int64_t now_ns() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
-}
-
-void sleep_until_ns(std::int64_t deadline_ns) {
-  timespec ts{};
-  ts.tv_sec = static_cast<time_t>(deadline_ns / 1'000'000'000);
-  ts.tv_nsec = static_cast<long>(deadline_ns % 1'000'000'000);
-  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
-  }
-}
-
-}  // namespace
 
 HapticLoop::HapticLoop(HapticPort& port, HapticLoopConfig config)
     : port_(port), config_(config), cycle_(config.cycle), histogram_(kHistogramBins + 1, 0) {
@@ -78,13 +63,13 @@ void HapticLoop::run() {
     realtime_ = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0;
   }
   const auto period_ns = static_cast<std::int64_t>(1e9 / config_.rate_hz);
-  const std::int64_t start_ns = now_ns();
+  const std::int64_t start_ns = monotonic_ns();
   std::int64_t deadline_ns = start_ns;
   ProbeSample probe;
   while (!stop_requested_.load(std::memory_order_relaxed)) {
     deadline_ns += period_ns;
     sleep_until_ns(deadline_ns);
-    const std::int64_t woke_ns = now_ns();
+    const std::int64_t woke_ns = monotonic_ns();
     const double late_us = static_cast<double>(std::max<std::int64_t>(0, woke_ns - deadline_ns)) * 1e-3;
     ++histogram_[std::min<std::size_t>(static_cast<std::size_t>(late_us), kHistogramBins)];
     max_late_us_ = std::max(max_late_us_, late_us);

@@ -51,7 +51,7 @@ TEST(DriveTap, RecordsOneLatencyPerDriveOnset) {
   DriveTap tap(memory);
   tap.open(kRate);
   const std::vector<float> silent(64, 0.0f), driven(64, 0.3f);
-  tap.note_event(monotonic_time_s());
+  tap.note_event(monotonic_s());
   tap.write(silent, 0.0);
   tap.write(driven, 0.008);
   tap.write(driven, 0.016);

@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "hal/actuator_profile.hpp"
-#include "hal/clock.hpp"
+#include "realtime/clock.hpp"
 #include "hal/drv2605l_driver.hpp"
 #include "hal/drv2605l_emulator.hpp"
 #include "hal/emulated_i2c_bus.hpp"

@@ -7,7 +7,7 @@
 #include "fake_shader.hpp"
 #include "player/contact_mixer.hpp"
 #include "player/scene.hpp"
-#include "player/soft_limiter.hpp"
+#include "realtime/soft_limit.hpp"
 #include "player/spatial_grid.hpp"
 
 namespace vimg {
@@ -53,24 +53,6 @@ TEST(SpatialGrid, VisitsFewCandidatesPerSmallQuery) {
     grid.for_each_candidate({x, y, x + 0.0001, y}, [&](std::uint32_t) { ++visited; });
   }
   EXPECT_LT(static_cast<double>(visited) / 100.0, 40.0);  // a handful per query, not a fraction of 100 000
-}
-
-TEST(SoftLimiter, IsTheIdentityBelowTheKneeAndBoundedAbove) {
-  for (double d = -0.5; d <= 0.5; d += 0.001) EXPECT_EQ(soft_limit(d), d);
-  double prev = soft_limit(0.5);
-  for (double d = 0.5; d < 50.0; d *= 1.01) {
-    const double y = soft_limit(d);
-    EXPECT_LE(y, 1.0);
-    if (d < 5.0) {
-      EXPECT_LT(y, 1.0);
-    }
-    EXPECT_GE(y, prev);  // monotonic
-    EXPECT_EQ(soft_limit(-d), -y);
-    prev = y;
-  }
-  // Slope continuous at the knee.
-  EXPECT_NEAR((soft_limit(0.5 + 1e-6) - soft_limit(0.5)) / 1e-6, 1.0, 1e-4);
-  EXPECT_LE(soft_limit(1e300), 1.0);
 }
 
 std::shared_ptr<Scene> scene_of(std::vector<std::pair<Bounds2M, std::pair<double, int>>> specs,

@@ -18,12 +18,12 @@ TEST(RealtimeLive, AFingerMovingOverASurfaceGivesSpeedOverPeriod) {
   RealtimeRenderer r(sink);
   ASSERT_TRUE(r.set_scene(compile_scene(img)));
   ASSERT_FALSE(r.start());
-  const double t0 = monotonic_time_s();
+  const double t0 = monotonic_s();
   r.push_event({t0, 0, TouchPhase::down, 10.0, 50.0, 1.0});
   double t = t0;
   while (t - t0 < 0.8) {
     std::this_thread::sleep_for(std::chrono::microseconds(8333));
-    t = monotonic_time_s();
+    t = monotonic_s();
     r.push_event({t, 0, TouchPhase::move, 10.0 + 100.0 * (t - t0), 50.0, 1.0});
   }
   r.push_event({t, 0, TouchPhase::up, 10.0 + 100.0 * (t - t0), 50.0, 1.0});

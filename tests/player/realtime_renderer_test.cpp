@@ -9,7 +9,6 @@
 #include "fake_shader.hpp"
 #include "player/drive_sinks.hpp"
 #include "player/realtime_renderer.hpp"
-#include "player/spsc_queue.hpp"
 
 namespace vimg {
 namespace {
@@ -25,42 +24,12 @@ std::shared_ptr<const Scene> constant_scene(double drive) {
 
 TouchEvent touch(TouchPhase phase, double x_mm, int finger = 0) {
   TouchEvent e;
-  e.time_s = monotonic_time_s();
+  e.time_s = monotonic_s();
   e.finger = finger;
   e.phase = phase;
   e.x_mm = x_mm;
   e.y_mm = 10.0;
   return e;
-}
-
-TEST(SpscQueue, HandsOverEveryValueInOrderAcrossThreads) {
-  SpscQueue<std::uint64_t> q(64);
-  constexpr std::uint64_t kCount = 200000;
-  std::thread producer([&] {
-    for (std::uint64_t i = 0; i < kCount;) {
-      if (q.push(i)) ++i;
-      else std::this_thread::yield();
-    }
-  });
-  std::uint64_t expected = 0;
-  while (expected < kCount) {
-    if (auto v = q.pop()) {
-      ASSERT_EQ(*v, expected);
-      ++expected;
-    } else {
-      std::this_thread::yield();
-    }
-  }
-  producer.join();
-  EXPECT_FALSE(q.pop().has_value());
-}
-
-TEST(SpscQueue, RefusesWhenFull) {
-  SpscQueue<int> q(4);
-  for (int i = 0; i < 4; ++i) EXPECT_TRUE(q.push(i));
-  EXPECT_FALSE(q.push(4));
-  EXPECT_EQ(q.pop(), 0);
-  EXPECT_TRUE(q.push(4));
 }
 
 TEST(RealtimeRenderer, RunsAtTheRequestedRate) {
