@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config git
   libsdl2-dev libtinyxml2-dev libpng-dev zlib1g-dev libhidapi-dev libgpiod-dev libimgui-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
   clang libclang-rt-14-dev
   xvfb xdotool imagemagick xauth python3
   locales
