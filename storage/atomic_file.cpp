@@ -12,67 +12,107 @@ namespace vimg {
 
 namespace {
 
-std::string describe(const std::filesystem::path& path, std::string_view what, int error_number) {
-  return path.string() + ": " + std::string(what) + ": " + std::strerror(error_number);
+std::filesystem::path folder_of(const std::filesystem::path& path) {
+  return path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
 }
 
 std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
   static std::atomic<unsigned> counter{0};
-  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   std::string name = ".";
   name += path.filename().string();
   name += ".tmp-";
   name += std::to_string(::getpid());
   name += '-';
   name += std::to_string(counter.fetch_add(1));
-  return dir / name;
-}
-
-bool write_all(int fd, std::string_view bytes) {
-  while (!bytes.empty()) {
-    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    bytes.remove_prefix(static_cast<size_t>(n));
-  }
-  return true;
+  return folder_of(path) / name;
 }
 
 }  // namespace
 
-std::optional<std::string> write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
-  if (path.filename().empty()) return path.string() + ": not a file name";
-  const std::filesystem::path temp = temporary_path_for(path);
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) return describe(path, "cannot create a temporary file next to it", errno);
-  const auto fail = [&](std::string_view what) {
-    const int saved = errno;
-    ::close(fd);
-    ::unlink(temp.c_str());
-    return describe(path, what, saved);
-  };
-  if (!write_all(fd, bytes)) return fail("cannot write");
-  if (::fsync(fd) != 0) return fail("cannot flush to disk");
-  if (::close(fd) != 0) {
-    const int saved = errno;
-    ::unlink(temp.c_str());
-    return describe(path, "cannot close", saved);
+AtomicFileWriter::AtomicFileWriter(std::filesystem::path path) : path_(std::move(path)) {
+  if (path_.filename().empty() || path_.filename() == "." || path_.filename() == "..") {
+    error_ = path_.string() + ": not a file name";
+    return;
   }
-  if (::rename(temp.c_str(), path.c_str()) != 0) {
+  temp_ = temporary_path_for(path_);
+  fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  if (fd_ < 0) {
     const int saved = errno;
-    ::unlink(temp.c_str());
-    return describe(path, "cannot replace", saved);
+    temp_.clear();
+    fail("cannot create a temporary file next to it", saved);
+    return;
   }
+  // Keep the permissions of the file being replaced (only when it is a regular file of ours).
+  struct stat target {};
+  if (::stat(path_.c_str(), &target) == 0 && S_ISREG(target.st_mode)) {
+    if (::fchmod(fd_, target.st_mode & 07777) != 0) fail("cannot keep its permissions", errno);
+  }
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+  if (!committed_) abort();
+}
+
+void AtomicFileWriter::fail(std::string_view what, int error_number) {
+  if (!error_.empty()) return;
+  error_ = path_.string() + ": " + std::string(what) + ": " + std::strerror(error_number);
+}
+
+bool AtomicFileWriter::write(std::string_view bytes) {
+  if (!ok()) return false;
+  while (!bytes.empty()) {
+    const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail("cannot write", errno);
+      return false;
+    }
+    bytes.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return true;
+}
+
+std::optional<std::string> AtomicFileWriter::commit() {
+  if (!ok()) {
+    abort();
+    return error_.empty() ? path_.string() + ": already written or abandoned" : error_;
+  }
+  if (::fsync(fd_) != 0) fail("cannot flush to disk", errno);
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) fail("cannot close", errno);
+  if (error_.empty() && ::rename(temp_.c_str(), path_.c_str()) != 0) fail("cannot replace", errno);
+  if (!error_.empty()) {
+    ::unlink(temp_.c_str());
+    temp_.clear();
+    return error_;
+  }
+  committed_ = true;
+  temp_.clear();
   // Make the rename itself durable.
-  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  const int dir_fd = ::open(folder_of(path_).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir_fd >= 0) {
     ::fsync(dir_fd);
     ::close(dir_fd);
   }
   return std::nullopt;
+}
+
+void AtomicFileWriter::abort() noexcept {
+  if (fd_ >= 0) {
+    ::close(fd_);
+    fd_ = -1;
+  }
+  if (!temp_.empty()) {
+    ::unlink(temp_.c_str());
+    temp_.clear();
+  }
+}
+
+std::optional<std::string> write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+  AtomicFileWriter writer(path);
+  writer.write(bytes);
+  return writer.commit();
 }
 
 }  // namespace vimg

@@ -1,7 +1,16 @@
 #pragma once
-// Writing a file so that readers see either the old content or the complete new one (spec
-// section 4): a temporary file in the same directory, written, flushed and fsync'ed, then renamed
-// over the target.
+// The one way the project writes a file (spec section 4): readers see either the old content or
+// the complete new one, never a torn file, and nobody else's file is ever touched.
+//   1. a temporary file is created next to the target with O_CREAT|O_EXCL|O_NOFOLLOW (a planted
+//      file or symlink of that name makes the create fail; it is never followed or reused);
+//   2. it takes the target's permission bits when the target exists (a 0600 file stays 0600),
+//      otherwise 0666 less the umask;
+//   3. the bytes are written (at once, or streamed by AtomicFileWriter), fsync'ed, the file is
+//      renamed over the target, and the folder is fsync'ed so that the rename is durable;
+//   4. on any error, and when a writer is destroyed without commit(), the temporary is removed.
+//
+// Threads: an AtomicFileWriter belongs to one thread at a time; it may block on the disk, so it
+// never runs on a real-time thread (feed it through an SPSC ring from there).
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -9,8 +18,38 @@
 
 namespace vimg {
 
-// Returns an error message naming the path, or nothing on success. The temporary file is removed
-// on failure.
+// Returns an error message naming the path, or nothing on success.
 std::optional<std::string> write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+class AtomicFileWriter {
+ public:
+  // Creates the temporary file. On failure, error() says why and every other call fails.
+  explicit AtomicFileWriter(std::filesystem::path path);
+  ~AtomicFileWriter();  // removes the temporary unless committed
+  AtomicFileWriter(const AtomicFileWriter&) = delete;
+  AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
+
+  bool ok() const { return fd_ >= 0 && error_.empty(); }
+  // The first error, naming the target path; empty while all is well.
+  const std::string& error() const { return error_; }
+  const std::filesystem::path& path() const { return path_; }
+  const std::filesystem::path& temporary_path() const { return temp_; }
+
+  // Appends bytes. False (and error() set) on failure; later calls then fail too.
+  bool write(std::string_view bytes);
+  // fsync, rename over the target, fsync the folder. Returns the error message, or nothing.
+  std::optional<std::string> commit();
+  // Removes the temporary file; the target is left as it was.
+  void abort() noexcept;
+
+ private:
+  void fail(std::string_view what, int error_number);
+
+  std::filesystem::path path_;
+  std::filesystem::path temp_;
+  int fd_ = -1;
+  bool committed_ = false;
+  std::string error_;
+};
 
 }  // namespace vimg

@@ -118,5 +118,70 @@ TEST(AtomicSave, ReplacesAnExistingFileCompletely) {
   EXPECT_EQ(test::read_text_file(target), "short");
 }
 
+TEST(AtomicSave, KeepsThePermissionsOfTheFileItReplaces) {
+  test::TempDir dir("atomic_mode");
+  const auto target = dir / "private.vimg";
+  test::write_text_file(target, "old");
+  std::filesystem::permissions(target, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+  ASSERT_FALSE(write_file_atomically(target, "new").has_value());
+  EXPECT_EQ(test::read_text_file(target), "new");
+  EXPECT_EQ(std::filesystem::status(target).permissions() & std::filesystem::perms::all,
+            std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+}
+
+TEST(AtomicFileWriter, StreamsChunksAndAppearsOnlyAtCommit) {
+  test::TempDir dir("atomic_stream");
+  const auto target = dir / "log.csv";
+  test::write_text_file(target, "previous");
+  AtomicFileWriter writer(target);
+  ASSERT_TRUE(writer.ok()) << writer.error();
+  EXPECT_TRUE(std::filesystem::exists(writer.temporary_path()));
+  EXPECT_EQ(writer.temporary_path().parent_path(), target.parent_path());
+  for (int i = 0; i < 1000; ++i) ASSERT_TRUE(writer.write("row " + std::to_string(i) + "\n"));
+  EXPECT_EQ(test::read_text_file(target), "previous");  // readers still see the old file
+  const auto temp = writer.temporary_path();
+  ASSERT_FALSE(writer.commit().has_value());
+  EXPECT_FALSE(std::filesystem::exists(temp));
+  const std::string text = test::read_text_file(target);
+  EXPECT_EQ(text.substr(0, 6), "row 0\n");
+  EXPECT_EQ(text.substr(text.size() - 8), "row 999\n");
+}
+
+TEST(AtomicFileWriter, AbandonedWriterLeavesTheTargetAndNoTemporary) {
+  test::TempDir dir("atomic_abandon");
+  const auto target = dir / "out.csv";
+  test::write_text_file(target, "keep me");
+  {
+    AtomicFileWriter writer(target);
+    ASSERT_TRUE(writer.write("half a fi"));
+  }
+  EXPECT_EQ(test::read_text_file(target), "keep me");
+  int entries = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path())) entries += entry.path() == target ? 0 : 1;
+  EXPECT_EQ(entries, 0);
+}
+
+TEST(AtomicFileWriter, NeverFollowsASymlinkPlantedAtItsTemporaryName) {
+  test::TempDir dir("atomic_symlink");
+  const auto victim = dir / "victim.txt";
+  test::write_text_file(victim, "precious");
+  const auto target = dir / "out.csv";
+  // Plant symlinks at the next temporary names this process will try.
+  AtomicFileWriter probe(target);
+  ASSERT_TRUE(probe.ok());
+  const std::string name = probe.temporary_path().filename().string();
+  probe.abort();
+  const auto dash = name.rfind('-');
+  const unsigned next = static_cast<unsigned>(std::stoul(name.substr(dash + 1))) + 1;
+  const auto planted = dir / (name.substr(0, dash + 1) + std::to_string(next));
+  std::filesystem::create_symlink(victim, planted);
+  AtomicFileWriter writer(target);
+  EXPECT_FALSE(writer.ok());
+  EXPECT_FALSE(writer.write("overwrite?"));
+  EXPECT_TRUE(writer.commit().has_value());
+  EXPECT_EQ(test::read_text_file(victim), "precious");
+  EXPECT_TRUE(std::filesystem::is_symlink(planted));
+}
+
 }  // namespace
 }  // namespace vimg
