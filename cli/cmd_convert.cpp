@@ -1,24 +1,19 @@
 // `vimg convert IN OUT [--scale PX_PER_MM]` (spec section 4): .vimg <-> .png by extension.
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
-#include <span>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <system_error>
-#include <vector>
 
 #include "cli/command.hpp"
 #include "storage/image_io.hpp"
-#include "storage/number_text.hpp"
 
 namespace vimg::cli {
 
 namespace {
-
-constexpr const char* kConvertUsage = "usage: vimg convert IN OUT [--scale PX_PER_MM]\n";
 
 bool has_extension(const std::filesystem::path& path, std::string_view ext) {
   std::string e = path.extension().string();
@@ -32,42 +27,11 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
   return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
 }
 
-}  // namespace
-
-int run_convert(std::span<const std::string_view> args) {
-  std::vector<std::string_view> positional;
+int run_convert(const std::string& in_file, const std::string& out_file, double scale_px_per_mm) {
   SaveOptions options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--scale") {
-      if (i + 1 >= args.size()) {
-        std::fprintf(stderr, "vimg convert: --scale needs a value\n%s", kConvertUsage);
-        return kExitUsage;
-      }
-      const ParsedNumber scale = parse_decimal(args[++i]);
-      if (const auto* reason = std::get_if<std::string>(&scale)) {
-        std::fprintf(stderr, "vimg convert: --scale \"%.*s\" %s\n", static_cast<int>(args[i].size()), args[i].data(),
-                     reason->c_str());
-        return kExitUsage;
-      }
-      options.scale_px_per_mm = std::get<double>(scale);
-      if (!(options.scale_px_per_mm > 0.0)) {
-        std::fprintf(stderr, "vimg convert: --scale must be > 0 pixels per mm\n");
-        return kExitUsage;
-      }
-    } else if (args[i].size() > 1 && args[i].front() == '-') {
-      std::fprintf(stderr, "vimg convert: unknown option '%.*s'\n%s", static_cast<int>(args[i].size()),
-                   args[i].data(), kConvertUsage);
-      return kExitUsage;
-    } else {
-      positional.push_back(args[i]);
-    }
-  }
-  if (positional.size() != 2) {
-    std::fprintf(stderr, "%s", kConvertUsage);
-    return kExitUsage;
-  }
-  const std::filesystem::path in(positional[0]);
-  const std::filesystem::path out(positional[1]);
+  options.scale_px_per_mm = scale_px_per_mm;
+  const std::filesystem::path in(in_file);
+  const std::filesystem::path out(out_file);
   if (!has_extension(out, ".vimg") && !has_extension(out, ".png")) {
     std::fprintf(stderr, "vimg convert: %s: the output must end in .vimg or .png\n", out.c_str());
     return kExitFailure;
@@ -87,6 +51,22 @@ int run_convert(std::span<const std::string_view> args) {
     return kExitFailure;
   }
   return kExitOk;
+}
+
+}  // namespace
+
+void add_convert_command(CLI::App& vimg, int& exit_code) {
+  CLI::App* sub = vimg.add_subcommand("convert", "convert .vimg <-> .png by extension; never overwrites IN");
+  struct Args {
+    std::string in, out;
+    double scale_px_per_mm = SaveOptions{}.scale_px_per_mm;
+  };
+  auto a = std::make_shared<Args>();
+  sub->add_option("IN", a->in, "the image to read (.vimg or .png)")->required();
+  sub->add_option("OUT", a->out, "the image to write (.vimg or .png), written atomically")->required();
+  sub->add_option("--scale", a->scale_px_per_mm, "PNG picture scale in pixels per mm")
+      ->check(cmdline::finite_in(1e-3, 1000.0));
+  sub->callback([a, &exit_code] { exit_code = run_convert(a->in, a->out, a->scale_px_per_mm); });
 }
 
 }  // namespace vimg::cli

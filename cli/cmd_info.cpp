@@ -1,8 +1,7 @@
 // `vimg info FILE` (spec section 4): size, counts per primitive kind, groups, meta.
 #include <cstdio>
-#include <span>
+#include <memory>
 #include <string>
-#include <string_view>
 
 #include "cli/command.hpp"
 #include "storage/image_io.hpp"
@@ -17,14 +16,7 @@ void print_field(const char* label, const std::optional<std::string>& value) {
   if (value) std::printf("%-13s %s\n", label, value->c_str());
 }
 
-}  // namespace
-
-int run_info(std::span<const std::string_view> args) {
-  if (args.size() != 1 || (args[0].size() > 1 && args[0].front() == '-')) {
-    std::fprintf(stderr, "usage: vimg info FILE\n");
-    return kExitUsage;
-  }
-  const std::string file(args[0]);
+int run_info(const std::string& file) {
   const LoadResult loaded = load_image_file(file);
   for (const Diagnostic& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
   if (!loaded.ok()) return kExitFailure;
@@ -58,6 +50,15 @@ int run_info(std::span<const std::string_view> args) {
     std::printf("%-13s none\n", "meta:");
   }
   return kExitOk;
+}
+
+}  // namespace
+
+void add_info_command(CLI::App& vimg, int& exit_code) {
+  CLI::App* sub = vimg.add_subcommand("info", "summary: size, primitives per kind, groups, meta");
+  auto file = std::make_shared<std::string>();
+  sub->add_option("FILE", *file, "a .vimg or .png image")->required();
+  sub->callback([file, &exit_code] { exit_code = run_info(*file); });
 }
 
 }  // namespace vimg::cli

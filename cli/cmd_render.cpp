@@ -1,12 +1,10 @@
 // `vimg render IMAGE --gesture G.csv --out OUT.(wav|csv) [--rate HZ]` (spec section 4).
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
-#include <string_view>
 
 #include "cli/command.hpp"
 #include "hal/actuator_profile.hpp"
@@ -21,16 +19,6 @@ namespace vimg::cli {
 
 namespace {
 
-constexpr std::string_view kRenderUsage =
-    "vimg render IMAGE --gesture G.csv --out OUT.(wav|csv) [--rate HZ] [--actuator PROFILE] "
-    "[--register-trace FILE.csv]";
-
-int usage_error(const std::string& problem) {
-  std::fprintf(stderr, "vimg render: %s\nusage: %.*s\n", problem.c_str(), static_cast<int>(kRenderUsage.size()),
-               kRenderUsage.data());
-  return kExitUsage;
-}
-
 std::string lower_extension(const std::filesystem::path& p) {
   std::string ext = p.extension().string();
   for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
@@ -41,66 +29,23 @@ struct RenderArgs {
   std::string image;
   std::string gesture;
   std::string out;
-  double rate_hz = 8000.0;
+  int rate_hz = 8000;
   // Options of the hardware layer (actuator profile) go in the block marked below.
   std::string actuator;        // profile file; empty: the ideal actuator
   std::string register_trace;  // DRV2605L register traffic CSV; needs a drv2605l profile
 };
 
-// Parses the arguments; returns an exit code on a usage error.
-std::optional<int> parse_render_args(std::span<const std::string_view> args, RenderArgs& out) {
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string_view a = args[i];
-    auto value = [&](std::string_view& v) {
-      if (i + 1 >= args.size()) return false;
-      v = args[++i];
-      return true;
-    };
-    std::string_view v;
-    if (a == "--gesture") {
-      if (!value(v)) return usage_error("--gesture needs a file");
-      out.gesture = std::string(v);
-    } else if (a == "--out") {
-      if (!value(v)) return usage_error("--out needs a file");
-      out.out = std::string(v);
-    } else if (a == "--rate") {
-      if (!value(v)) return usage_error("--rate needs a value in Hz");
-      int rate = 0;
-      const auto r = std::from_chars(v.data(), v.data() + v.size(), rate);
-      if (r.ec != std::errc{} || r.ptr != v.data() + v.size() || rate < 1 || rate > 48000)
-        return usage_error("--rate must be a whole number of Hz in 1..48000, not '" + std::string(v) + "'");
-      out.rate_hz = rate;
-    }
-    // ---- hardware layer options (e.g. --actuator PROFILE) ----
-    else if (a == "--actuator") {
-      if (!value(v)) return usage_error("--actuator needs a profile file");
-      out.actuator = std::string(v);
-    } else if (a == "--register-trace") {
-      if (!value(v)) return usage_error("--register-trace needs a file");
-      out.register_trace = std::string(v);
-    }
-    // ---- end of hardware layer options ----
-    else if (a.size() > 1 && a.front() == '-') {
-      return usage_error("unknown option '" + std::string(a) + "'");
-    } else if (out.image.empty()) {
-      out.image = std::string(a);
-    } else {
-      return usage_error("unexpected argument '" + std::string(a) + "'");
-    }
-  }
-  if (out.image.empty()) return usage_error("missing IMAGE");
-  if (out.gesture.empty()) return usage_error("missing --gesture G.csv");
-  if (out.out.empty()) return usage_error("missing --out OUT.wav or OUT.csv");
-  const std::string ext = lower_extension(out.out);
-  if (ext != ".wav" && ext != ".csv") return usage_error("--out must end in .wav or .csv: '" + out.out + "'");
-  if (!out.register_trace.empty() && out.actuator.empty())
-    return usage_error("--register-trace needs --actuator with a drv2605l profile");
+// The checks CLI11 cannot express; returns an exit code on a usage error.
+std::optional<int> check_render_args(const RenderArgs& a) {
+  const std::string ext = lower_extension(a.out);
+  if (ext != ".wav" && ext != ".csv") return usage_error("vimg render", "--out must end in .wav or .csv: '" + a.out + "'");
+  if (!a.register_trace.empty() && a.actuator.empty())
+    return usage_error("vimg render", "--register-trace needs --actuator with a drv2605l profile");
   return std::nullopt;
 }
 
-int run_render(std::span<const std::string_view> args) {
-  RenderArgs a;
-  if (auto code = parse_render_args(args, a)) return *code;
+int run_render(const RenderArgs& a) {
+  if (auto code = check_render_args(a)) return *code;
 
   const LoadResult loaded = load_image_file(a.image);
   for (const Diagnostic& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
@@ -129,7 +74,7 @@ int run_render(std::span<const std::string_view> args) {
     sink = std::make_unique<CsvSink>(a.out);
   }
   OfflineRenderOptions options;
-  options.sample_rate_hz = a.rate_hz;
+  options.sample_rate_hz = static_cast<double>(a.rate_hz);
   std::unique_ptr<Drv2605lTraceSink> trace;
   if (!a.register_trace.empty()) {
     try {
@@ -158,6 +103,16 @@ int run_render(std::span<const std::string_view> args) {
 
 }  // namespace
 
-int render_command(std::span<const std::string_view> args) { return run_render(args); }
+void add_render_command(CLI::App& vimg, int& exit_code) {
+  CLI::App* sub = vimg.add_subcommand("render", "render the drive signal of a gesture over an image (mono float WAV or time_s,drive CSV)");
+  auto a = std::make_shared<RenderArgs>();
+  sub->add_option("IMAGE", a->image, "a .vimg or .png image")->required();
+  sub->add_option("--gesture", a->gesture, "the gesture CSV (time_s,finger,x_mm,y_mm,pressure,phase)")->required();
+  sub->add_option("--out", a->out, "OUT.wav (mono 32-bit float) or OUT.csv (time_s,drive), written atomically")->required();
+  sub->add_option("--rate", a->rate_hz, "output sample rate in Hz")->check(CLI::Range(1, 48000));
+  sub->add_option("--actuator", a->actuator, "actuator profile (assets/profiles/*.xml); default: ideal, 175 Hz carrier");
+  sub->add_option("--register-trace", a->register_trace, "DRV2605L register traffic as CSV (needs a drv2605l --actuator)");
+  sub->callback([a, &exit_code] { exit_code = run_render(*a); });
+}
 
 }  // namespace vimg::cli

@@ -1,38 +1,38 @@
 // `vimg validate FILE...` (spec section 4): checks .vimg and .png files.
 #include <cstdio>
-#include <span>
+#include <memory>
 #include <string>
-#include <string_view>
+#include <vector>
 
 #include "cli/command.hpp"
 #include "storage/image_io.hpp"
 
 namespace vimg::cli {
 
-int run_validate(std::span<const std::string_view> args) {
-  if (args.empty()) {
-    std::fprintf(stderr, "usage: vimg validate FILE...\n");
-    return kExitUsage;
-  }
-  for (const auto arg : args) {
-    if (arg.size() > 1 && arg.front() == '-') {
-      std::fprintf(stderr, "vimg validate: unknown option '%.*s'\nusage: vimg validate FILE...\n",
-                   static_cast<int>(arg.size()), arg.data());
-      return kExitUsage;
-    }
-  }
+namespace {
+
+int run_validate(const std::vector<std::string>& files) {
   bool all_valid = true;
-  for (const auto arg : args) {
-    const LoadResult result = load_image_file(std::string(arg));
+  for (const std::string& arg : files) {
+    const LoadResult result = load_image_file(arg);
     for (const Diagnostic& d : result.diagnostics) std::printf("%s\n", d.to_string().c_str());
     if (result.ok()) {
-      std::printf("%.*s: ok\n", static_cast<int>(arg.size()), arg.data());
+      std::printf("%s: ok\n", arg.c_str());
     } else {
       all_valid = false;
     }
   }
   std::fflush(stdout);
   return all_valid ? kExitOk : kExitFailure;
+}
+
+}  // namespace
+
+void add_validate_command(CLI::App& vimg, int& exit_code) {
+  CLI::App* sub = vimg.add_subcommand("validate", "check .vimg and .png images; exit 1 if any is invalid");
+  auto files = std::make_shared<std::vector<std::string>>();
+  sub->add_option("FILE", *files, "images to check")->required();
+  sub->callback([files, &exit_code] { exit_code = run_validate(*files); });
 }
 
 }  // namespace vimg::cli

@@ -1,8 +1,8 @@
 // `vimg volume make-study --seed N --out DIR` and `vimg volume probe SCENE --path P.csv --out F.csv`
 // (docs/volume.md).
-#include <charconv>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -17,37 +17,12 @@
 namespace vimg::cli {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: vimg volume make-study --seed N --out DIR\n"
-    "       vimg volume probe SCENE --path P.csv --out F.csv\n";
-
-int usage(const char* problem) {
-  std::fprintf(stderr, "vimg volume: %s\n%s", problem, kUsage);
-  return kExitUsage;
-}
-
 void print_diagnostics(const std::vector<Diagnostic>& diagnostics) {
   for (const auto& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
 }
 
-int make_study(std::span<const std::string_view> args) {
-  std::optional<std::uint64_t> seed;
-  std::string out;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--seed" && i + 1 < args.size()) {
-      const std::string_view s = args[++i];
-      std::uint64_t v = 0;
-      const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-      if (ec != std::errc() || end != s.data() + s.size()) return usage("--seed needs a non-negative integer");
-      seed = v;
-    } else if (args[i] == "--out" && i + 1 < args.size()) {
-      out = std::string(args[++i]);
-    } else {
-      return usage(("unexpected argument '" + std::string(args[i]) + "'").c_str());
-    }
-  }
-  if (!seed || out.empty()) return usage("make-study needs --seed N and --out DIR");
-  const StudySet set = make_study_set(*seed);
+int make_study(std::uint64_t seed, const std::string& out) {
+  const StudySet set = make_study_set(seed);
   if (auto error = write_study_set(set, out)) {
     std::fprintf(stderr, "vimg volume: %s\n", error->c_str());
     return kExitFailure;
@@ -57,15 +32,7 @@ int make_study(std::span<const std::string_view> args) {
   return kExitOk;
 }
 
-int probe(std::span<const std::string_view> args) {
-  std::string scene_path, path_file, out;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--path" && i + 1 < args.size()) path_file = std::string(args[++i]);
-    else if (args[i] == "--out" && i + 1 < args.size()) out = std::string(args[++i]);
-    else if (!args[i].starts_with("--") && scene_path.empty()) scene_path = std::string(args[i]);
-    else return usage(("unexpected argument '" + std::string(args[i]) + "'").c_str());
-  }
-  if (scene_path.empty() || path_file.empty() || out.empty()) return usage("probe needs SCENE, --path P.csv and --out F.csv");
+int probe(const std::string& scene_path, const std::string& path_file, const std::string& out) {
   VolumeSceneLoadResult loaded = load_volume_scene_file(scene_path);
   print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) return kExitFailure;
@@ -91,15 +58,29 @@ int probe(std::span<const std::string_view> args) {
 
 }  // namespace
 
-int volume_command(std::span<const std::string_view> args) {
-  if (args.empty()) return usage("missing subcommand");
-  if (args[0] == "make-study") return make_study(args.subspan(1));
-  if (args[0] == "probe") return probe(args.subspan(1));
-  if (args[0] == "--help" || args[0] == "-h") {
-    std::printf("%s", kUsage);
-    return kExitOk;
-  }
-  return usage(("unknown subcommand '" + std::string(args[0]) + "'").c_str());
+void add_volume_command(CLI::App& vimg, int& exit_code) {
+  CLI::App* volume = vimg.add_subcommand("volume", "volume haptics: write the study data set, or render forces along a probe path");
+  volume->require_subcommand(1);
+
+  CLI::App* study = volume->add_subcommand("make-study", "write the study data set (two NRRD volumes and a scene) into DIR");
+  struct StudyArgs {
+    std::uint64_t seed = 0;
+    std::string out;
+  };
+  auto s = std::make_shared<StudyArgs>();
+  study->add_option("--seed", s->seed, "random seed (a non-negative integer)")->required()->check(CLI::NonNegativeNumber);
+  study->add_option("--out", s->out, "output folder (created if missing)")->required();
+  study->callback([s, &exit_code] { exit_code = make_study(s->seed, s->out); });
+
+  CLI::App* probe_cmd = volume->add_subcommand("probe", "render the forces along a probe path (CSV time_s,x_mm,y_mm,z_mm)");
+  struct ProbeArgs {
+    std::string scene, path, out;
+  };
+  auto p = std::make_shared<ProbeArgs>();
+  probe_cmd->add_option("SCENE", p->scene, "a volume scene (.vscene.xml)")->required();
+  probe_cmd->add_option("--path", p->path, "the probe path CSV")->required();
+  probe_cmd->add_option("--out", p->out, "the force CSV to write (atomically)")->required();
+  probe_cmd->callback([p, &exit_code] { exit_code = probe(p->scene, p->path, p->out); });
 }
 
 }  // namespace vimg::cli

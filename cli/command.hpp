@@ -1,22 +1,23 @@
 #pragma once
-// One `vimg` subcommand. Each lives in its own cli/cmd_*.cpp and is listed in cli/commands.cpp.
-#include <span>
-#include <string_view>
+// One `vimg` subcommand per cli/cmd_*.cpp. Each adds itself to the `vimg` CLI11 app with its
+// options and a callback that runs it and stores its exit status in `exit_code`.
+#include "cmdline/command_line.hpp"
 
 namespace vimg::cli {
 
-// Exit codes shared by every command (spec section 4).
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitFailure = 1;
-inline constexpr int kExitUsage = 2;
+using cmdline::kExitFailure;
+using cmdline::kExitOk;
+using cmdline::kExitUsage;
 
-struct Command {
-  std::string_view name;     // e.g. "validate"
-  std::string_view usage;    // e.g. "vimg validate FILE..."
-  std::string_view summary;  // one line for `vimg --help`
-  int (*run)(std::span<const std::string_view> args);  // args after the command name
-};
+void add_validate_command(CLI::App& vimg, int& exit_code);
+void add_convert_command(CLI::App& vimg, int& exit_code);
+void add_info_command(CLI::App& vimg, int& exit_code);
+void add_render_command(CLI::App& vimg, int& exit_code);
+void add_gesture_command(CLI::App& vimg, int& exit_code);
+void add_volume_command(CLI::App& vimg, int& exit_code);
 
-std::span<const Command> all_commands();
+// A usage problem found after parsing (e.g. two options that do not go together): prints it in
+// the cmdline format for `program` ("vimg render") and returns kExitUsage.
+int usage_error(const char* program, const std::string& problem);
 
 }  // namespace vimg::cli

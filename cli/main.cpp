@@ -1,43 +1,29 @@
-// `vimg`: the headless command. Dispatches to the subcommands listed in cli/commands.cpp.
+// `vimg`: the headless command (spec section 4). Each subcommand lives in its own cli/cmd_*.cpp.
 #include <cstdio>
-#include <string_view>
-#include <vector>
 
 #include "cli/command.hpp"
 
-namespace {
+namespace vimg::cli {
 
-void print_help(std::FILE* out) {
-  std::fprintf(out, "usage: vimg COMMAND [ARGS...]\n\ncommands:\n");
-  for (const auto& c : vimg::cli::all_commands()) {
-    std::fprintf(out, "  %-60.*s %.*s\n", static_cast<int>(c.usage.size()), c.usage.data(),
-                 static_cast<int>(c.summary.size()), c.summary.data());
-  }
-  std::fprintf(out, "\n  vimg --version\n  vimg --help\n");
+int usage_error(const char* program, const std::string& problem) {
+  std::fprintf(stderr, "%s: error: %s\nRun '%s --help' for usage.\n", program, problem.c_str(), program);
+  return kExitUsage;
 }
 
-}  // namespace
+}  // namespace vimg::cli
 
 int main(int argc, char** argv) {
   using namespace vimg::cli;
-  if (argc < 2) {
-    print_help(stderr);
-    return kExitUsage;
-  }
-  const std::string_view name = argv[1];
-  if (name == "--help" || name == "-h" || name == "help") {
-    print_help(stdout);
-    return kExitOk;
-  }
-  if (name == "--version") {
-    std::printf("vimg %s\n", VIMG_VERSION);
-    return kExitOk;
-  }
-  std::vector<std::string_view> args(argv + 2, argv + argc);
-  for (const auto& c : all_commands()) {
-    if (c.name == name) return c.run(args);
-  }
-  std::fprintf(stderr, "vimg: unknown command '%s'\n", argv[1]);
-  print_help(stderr);
-  return kExitUsage;
+  CLI::App app("vimg: validate, convert, inspect and render vibrotactile images, headless.");
+  vimg::cmdline::configure(app, "vimg");
+  int exit_code = kExitOk;
+  add_validate_command(app, exit_code);
+  add_convert_command(app, exit_code);
+  add_info_command(app, exit_code);
+  add_render_command(app, exit_code);
+  add_gesture_command(app, exit_code);
+  add_volume_command(app, exit_code);
+  app.require_subcommand(1);
+  if (auto code = vimg::cmdline::parse(app, argc, argv)) return *code;
+  return exit_code;
 }

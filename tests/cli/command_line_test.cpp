@@ -1,0 +1,76 @@
+// Every `vimg` command follows the project's command-line conventions (cmdline/command_line.hpp):
+// --help and --version exit 0 on stdout, usage errors exit 2 naming the command, numbers must be
+// finite and in range.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "cmdline/command_line.hpp"
+
+namespace vimg {
+namespace {
+
+struct CommandRun {
+  int exit_code = -1;
+  std::string out;
+};
+
+// Runs `vimg ARGS`, capturing stdout and stderr together.
+CommandRun vimg(const std::string& args) {
+  const std::string cmd = "'" VIMG_BINARY_DIR "/cli/vimg' " + args + " 2>&1";
+  CommandRun run;
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (!pipe) return run;
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+TEST(VimgConventions, HelpAndVersionExitZeroForEveryCommand) {
+  for (const char* command : {"", "validate", "convert", "info", "render", "gesture", "gesture line", "gesture arc",
+                              "gesture circle", "volume", "volume make-study", "volume probe"}) {
+    const CommandRun help = vimg(std::string(command) + " --help");
+    EXPECT_EQ(help.exit_code, 0) << command << "\n" << help.out;
+    EXPECT_NE(help.out.find("Usage:"), std::string::npos) << command << "\n" << help.out;
+  }
+  const CommandRun version = vimg("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_EQ(version.out, std::string("vimg ") + cmdline::version() + "\n");
+}
+
+TEST(VimgConventions, UsageErrorsExitTwoAndNameTheCommand) {
+  const CommandRun none = vimg("");
+  EXPECT_EQ(none.exit_code, 2);
+  const CommandRun unknown = vimg("frobnicate");
+  EXPECT_EQ(unknown.exit_code, 2);
+  const CommandRun missing = vimg("render image.vimg --out x.wav");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.out.find("vimg render: error: --gesture is required"), std::string::npos) << missing.out;
+  EXPECT_NE(missing.out.find("Run 'vimg render --help'"), std::string::npos) << missing.out;
+  EXPECT_EQ(vimg("render image.vimg --gesture g.csv --out x.mp3").exit_code, 2);
+  EXPECT_EQ(vimg("render image.vimg --gesture g.csv --out x.wav --rate 0").exit_code, 2);
+  EXPECT_EQ(vimg("render image.vimg --gesture g.csv --out x.wav --rate 8000.5").exit_code, 2);
+  EXPECT_EQ(vimg("volume make-study --seed -3 --out d").exit_code, 2);
+  EXPECT_EQ(vimg("volume probe scene.xml --out f.csv").exit_code, 2);
+}
+
+TEST(VimgConventions, NumbersMustBeFiniteAndInRange) {
+  for (const char* bad : {"nan", "inf", "-inf", "1e999", "5,5", "", "0x10"}) {
+    const CommandRun r = vimg(std::string("gesture line --from 0,0 --to 10,0 --out g.csv --speed '") + bad + "'");
+    EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.out;
+  }
+  const CommandRun point = vimg("gesture line --from 0,nan --to 10,0 --out g.csv");
+  EXPECT_EQ(point.exit_code, 2);
+  EXPECT_NE(point.out.find("not X,Y with two finite numbers"), std::string::npos) << point.out;
+  EXPECT_EQ(vimg("gesture line --from 0,0 --to 10,0 --out g.csv --pressure 1.5").exit_code, 2);
+  EXPECT_EQ(vimg("gesture circle --center 0,0 --radius -1 --out g.csv").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace vimg
