@@ -1,113 +1,69 @@
 #include "editor/editor_options.hpp"
 
 #include <charconv>
-#include <cmath>
-#include <cstdlib>
-#include <string_view>
+
+#include "cmdline/command_line.hpp"
 
 namespace vimg::editor {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: vimg-editor [FILE] [options]\n"
-    "  FILE                     a .vimg or .png vibrotactile image to open\n"
-    "  --output OUT             playing-mode output (default audio): audio[:DEVICE], wav:FILE, csv:FILE,\n"
-    "                           drv2605l:/dev/i2c-N[,en=CHIP:LINE], spi:/dev/spidevB.C, hid:VID:PID, none\n"
-    "  --rate HZ                output sample rate (default 8000)\n"
-    "  --recovery-dir DIR       where autosave keeps the recovery file\n"
-    "  --autosave-interval S    seconds between autosaves of unsaved changes (default 5)\n"
-    "  --library-dir DIR        your library folder (default ~/vibroimages)\n"
-    "  --zoom Z                 initial zoom, 1 = physical size (default 1)\n"
-    "  --px-per-mm D            screen density (default: from the display)\n"
-    "  --size WxH               window size in pixels (default 1280x800)\n"
-    "  --play                   start in playing mode\n"
-    "  --record-gesture FILE    record the gesture in playing mode and write it to FILE (CSV)\n"
-    "  --print-layout           print canvas and widget positions on stdout (scripted tests)\n"
-    "  --benchmark-frames N     draw N frames as fast as possible, print frame times, exit\n"
-    "  --help, --version\n";
-
-bool parse_double(std::string_view text, double& out) {
-  const char* end = text.data() + text.size();
-  auto [ptr, ec] = std::from_chars(text.data(), end, out);
-  return ec == std::errc() && ptr == end && std::isfinite(out);
-}
-
-bool parse_int(std::string_view text, int& out) {
-  const char* end = text.data() + text.size();
-  auto [ptr, ec] = std::from_chars(text.data(), end, out);
-  return ec == std::errc() && ptr == end;
-}
-
-ParsedOptions usage_error(const std::string& problem) {
-  return ParsedOptions{std::nullopt, 2, "vimg-editor: " + problem + "\n" + kUsage};
+// "WxH" with whole pixel counts of at least 320x240.
+CLI::Validator window_size() {
+  return CLI::Validator(
+      [](std::string& input) -> std::string {
+        int w = 0, h = 0;
+        if (!parse_window_size(input, w, h)) return "'" + input + "' is not WxH of at least 320x240 pixels";
+        return {};
+      },
+      "WxH");
 }
 
 }  // namespace
 
+bool parse_window_size(const std::string& text, int& width_px, int& height_px) {
+  const auto x = text.find('x');
+  if (x == std::string::npos) return false;
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  const auto w = std::from_chars(begin, begin + x, width_px);
+  const auto h = std::from_chars(begin + x + 1, end, height_px);
+  return w.ec == std::errc() && w.ptr == begin + x && h.ec == std::errc() && h.ptr == end && width_px >= 320 &&
+         height_px >= 240;
+}
+
 ParsedOptions parse_editor_options(int argc, char** argv) {
   EditorOptions o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    auto value = [&](std::string_view& out) {
-      if (i + 1 >= argc) return false;
-      out = argv[++i];
-      return true;
-    };
-    std::string_view v;
-    if (arg == "--help" || arg == "-h") return ParsedOptions{std::nullopt, 0, kUsage};
-    if (arg == "--version") return ParsedOptions{std::nullopt, 0, std::string("vimg-editor ") + VIMG_VERSION + "\n"};
-    if (arg == "--play") {
-      o.play_at_start = true;
-    } else if (arg == "--print-layout") {
-      o.print_layout = true;
-    } else if (arg == "--output") {
-      if (!value(v)) return usage_error("--output needs a value");
-      OutputChoiceResult parsed = parse_output_choice(std::string(v));
-      if (!parsed.choice) return usage_error(parsed.error);
-      o.output = *parsed.choice;
-    } else if (arg == "--rate") {
-      if (!value(v) || !parse_double(v, o.sample_rate_hz) || o.sample_rate_hz < 1 || o.sample_rate_hz > 48000) {
-        return usage_error("--rate needs a number of Hz in [1, 48000]");
-      }
-    } else if (arg == "--recovery-dir") {
-      if (!value(v)) return usage_error("--recovery-dir needs a folder");
-      o.recovery_dir = v;
-    } else if (arg == "--library-dir") {
-      if (!value(v)) return usage_error("--library-dir needs a folder");
-      o.library_dir = v;
-    } else if (arg == "--record-gesture") {
-      if (!value(v)) return usage_error("--record-gesture needs a file");
-      o.record_gesture = v;
-    } else if (arg == "--autosave-interval") {
-      if (!value(v) || !parse_double(v, o.autosave_interval_s) || o.autosave_interval_s <= 0) {
-        return usage_error("--autosave-interval needs a positive number of seconds");
-      }
-    } else if (arg == "--zoom") {
-      if (!value(v) || !parse_double(v, o.zoom) || o.zoom <= 0) return usage_error("--zoom needs a positive number");
-    } else if (arg == "--px-per-mm") {
-      if (!value(v) || !parse_double(v, o.px_per_mm) || o.px_per_mm <= 0) {
-        return usage_error("--px-per-mm needs a positive number");
-      }
-    } else if (arg == "--size") {
-      if (!value(v)) return usage_error("--size needs WxH");
-      const auto x = v.find('x');
-      if (x == std::string_view::npos || !parse_int(v.substr(0, x), o.width_px) ||
-          !parse_int(v.substr(x + 1), o.height_px) || o.width_px < 320 || o.height_px < 240) {
-        return usage_error("--size needs WxH, at least 320x240");
-      }
-    } else if (arg == "--benchmark-frames") {
-      if (!value(v) || !parse_int(v, o.benchmark_frames) || o.benchmark_frames <= 0) {
-        return usage_error("--benchmark-frames needs a positive count");
-      }
-    } else if (!arg.empty() && arg[0] == '-') {
-      return usage_error("unknown option '" + std::string(arg) + "'");
-    } else if (o.file.empty()) {
-      o.file = arg;
-    } else {
-      return usage_error("only one FILE can be opened");
-    }
-  }
-  return ParsedOptions{o, 0, ""};
+  std::string output = "audio", size;
+  CLI::App app("vimg-editor: draw vibrotactile images and play them (F5).");
+  cmdline::configure(app, "vimg-editor");
+  app.add_option("FILE", o.file, "a .vimg or .png vibrotactile image to open");
+  app.add_option("--output", output,
+                 "playing-mode output: audio[:DEVICE], wav:FILE, csv:FILE, drv2605l:/dev/i2c-N[,en=CHIP:LINE], "
+                 "spi:/dev/spidevB.C, hid:VID:PID, none")
+      ->check(CLI::Validator(
+          [](std::string& input) -> std::string {
+            const OutputChoiceResult parsed = parse_output_choice(input);
+            return parsed.choice ? std::string() : parsed.error;
+          },
+          "OUT"));
+  app.add_option("--rate", o.sample_rate_hz, "output sample rate, Hz")->check(cmdline::finite_in(1.0, 48000.0));
+  app.add_option("--recovery-dir", o.recovery_dir, "where autosave keeps the recovery file");
+  app.add_option("--autosave-interval", o.autosave_interval_s, "seconds between autosaves of unsaved changes")
+      ->check(cmdline::finite_in(0.1, 86400.0));
+  app.add_option("--library-dir", o.library_dir, "your library folder (default ~/vibroimages)");
+  app.add_option("--zoom", o.zoom, "initial zoom, 1 = physical size")->check(cmdline::finite_in(0.01, 100.0));
+  app.add_option("--px-per-mm", o.px_per_mm, "screen density (default: from the display)")
+      ->check(cmdline::finite_in(0.1, 1000.0));
+  app.add_option("--size", size, "window size in pixels (default 1280x800)")->check(window_size());
+  app.add_flag("--play", o.play_at_start, "start in playing mode");
+  app.add_option("--record-gesture", o.record_gesture, "record the gesture in playing mode and write it to FILE (CSV)");
+  app.add_flag("--print-layout", o.print_layout, "print canvas and widget positions on stdout (scripted tests)");
+  app.add_option("--benchmark-frames", o.benchmark_frames, "draw N frames as fast as possible, print frame times, exit")
+      ->check(CLI::Range(1, 1'000'000));
+  if (const auto code = cmdline::parse(app, argc, argv)) return ParsedOptions{std::nullopt, *code};
+  o.output = *parse_output_choice(output).choice;
+  if (!size.empty()) parse_window_size(size, o.width_px, o.height_px);
+  return ParsedOptions{o, cmdline::kExitOk};
 }
 
 }  // namespace vimg::editor

@@ -1,5 +1,5 @@
 #pragma once
-// The command line of vimg-editor.
+// The command line of vimg-editor (`vimg-editor --help` lists it).
 #include <optional>
 #include <string>
 
@@ -25,11 +25,14 @@ struct EditorOptions {
 };
 
 struct ParsedOptions {
-  std::optional<EditorOptions> options;  // empty: exit with `exit_code` after printing `message`
+  std::optional<EditorOptions> options;  // empty: exit with `exit_code` (help, version or usage error, printed)
   int exit_code = 0;
-  std::string message;
 };
 
+// Parses the command line with the project's conventions (cmdline/command_line.hpp).
 ParsedOptions parse_editor_options(int argc, char** argv);
+
+// "WxH", whole pixels, at least 320x240.
+bool parse_window_size(const std::string& text, int& width_px, int& height_px);
 
 }  // namespace vimg::editor
