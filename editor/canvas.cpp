@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "editor/core/element_ids.hpp"
+#include "editor/core/polyline_lod.hpp"
 #include "editor/editor_app.hpp"
 #include "player/touch_event.hpp"
 #include "storage/image_io.hpp"
@@ -200,8 +201,15 @@ void EditorApp::draw_element(ImDrawList* dl, const Element& element, bool highli
         }
       }
     } else if (s->points.size() >= 2) {
-      for (const Point2Mm& p : s->points) dl->PathLineTo(iv(view_.to_px(p)));
-      dl->PathStroke(with_alpha(col, 255), ImDrawFlags_Closed, 1.5f);
+      // At screen resolution and in bounded runs: a huge polygon neither overflows ImGui's stack
+      // nor costs more than the pixels it covers (editor/core/polyline_lod.hpp).
+      outline_px_.clear();
+      for (const Point2Mm& p : s->points) outline_px_.push_back(view_.to_px(p));
+      decimate_polyline_px(outline_px_, 1.0f, true, outline_lod_px_);
+      for_each_stroke_run(outline_lod_px_, [&](const Point2Px* first, std::size_t count) {
+        for (std::size_t i = 0; i < count; ++i) dl->PathLineTo(iv(first[i]));
+        dl->PathStroke(with_alpha(col, 255), ImDrawFlags_None, 1.5f);
+      });
     }
     // Pattern stripes at the spatial period (every k-th period when they would be too dense).
     const double period = std::max(1e-3, s->period_mm);
