@@ -21,12 +21,18 @@ namespace {
 // Answers like a DRV2605L to the few reads of initialization and ignores writes: the bus costs nothing.
 class NoOpI2cBus final : public I2cBus {
  public:
-  void write(std::uint8_t, std::span<const std::uint8_t> bytes) override {
-    writes_ += bytes.size() >= 2 && bytes[0] == drv2605l::kRtpInput ? 1 : 0;
+  void write(std::uint8_t address, std::span<const std::uint8_t> bytes) override { try_write(address, bytes); }
+  void write_read(std::uint8_t address, std::span<const std::uint8_t> out, std::span<std::uint8_t> in) override {
+    try_write_read(address, out, in);
   }
-  void write_read(std::uint8_t, std::span<const std::uint8_t> out, std::span<std::uint8_t> in) override {
+  int try_write(std::uint8_t, std::span<const std::uint8_t> bytes) noexcept override {
+    writes_ += bytes.size() >= 2 && bytes[0] == drv2605l::kRtpInput ? 1 : 0;
+    return 0;
+  }
+  int try_write_read(std::uint8_t, std::span<const std::uint8_t> out, std::span<std::uint8_t> in) noexcept override {
     const bool status = !out.empty() && out[0] == drv2605l::kStatus;
     for (auto& byte : in) byte = status ? static_cast<std::uint8_t>(drv2605l::kDeviceIdDrv2605l << 5) : 0;
+    return 0;
   }
   void reopen() override {}
   const std::string& path() const override { return path_; }

@@ -1,8 +1,8 @@
 #include "hal/bos1901_emulator.hpp"
 
+#include <cerrno>
 #include <cmath>
 
-#include "hal/bos1901_registers.hpp"
 #include "hal/device_error.hpp"
 
 namespace vimg {
@@ -10,7 +10,16 @@ namespace vimg {
 using namespace bos1901;
 
 Bos1901Emulator::Bos1901Emulator(Clock& clock, std::string path) : clock_(clock), path_(std::move(path)) {
+  power_on_state();
+}
+
+void Bos1901Emulator::power_on_state() {
   config_ = 7;  // 8 ksps, output disabled
+  fifo_head_ = 0;
+  fifo_count_ = 0;
+  output_ = 0;
+  over_temperature_ = false;
+  was_playing_ = false;
 }
 
 void Bos1901Emulator::advance() {
@@ -22,7 +31,7 @@ void Bos1901Emulator::advance() {
   // One FIFO entry reaches the output every sample period.
   while (play_phase_us_ + sample_period_us_ <= now) {
     play_phase_us_ += sample_period_us_;
-    if (fifo_.empty()) {
+    if (fifo_count_ == 0) {
       if (was_playing_ && output_ != 0) {
         ++underruns_;  // ran dry while driving: the output is stuck away from 0 V
       }
@@ -30,18 +39,19 @@ void Bos1901Emulator::advance() {
       play_phase_us_ = now;
       break;
     }
-    output_ = fifo_.front();
-    fifo_.pop_front();
+    output_ = fifo_[static_cast<std::size_t>(fifo_head_)];
+    fifo_head_ = (fifo_head_ + 1) % kFifoDepth;
+    --fifo_count_;
     was_playing_ = true;
     played_.push_back({static_cast<std::int64_t>(play_phase_us_), output_});
   }
 }
 
-std::uint16_t Bos1901Emulator::broadcast_value() {
+std::uint16_t Bos1901Emulator::broadcast_value() const {
   const unsigned selected = (config_ >> kConfigBroadcastShift) & 0x1Fu;
   std::uint16_t value = 0;
   if (selected == kIcStatus) {
-    const auto level = static_cast<int>(fifo_.size());
+    const int level = fifo_count_;
     value = static_cast<std::uint16_t>((kFifoDepth - level) & kStatusFifoSpaceMask);
     if (level == 0) value |= kStatusEmpty;
     if (level == kFifoDepth) value = static_cast<std::uint16_t>(value | kStatusFull);
@@ -56,20 +66,17 @@ void Bos1901Emulator::execute(std::uint16_t command) {
   const unsigned reg = command >> 12;
   const std::uint16_t value = command & 0xFFFu;
   if (reg == kReference) {
-    if (fifo_.size() >= static_cast<std::size_t>(kFifoDepth)) {
+    if (fifo_count_ >= kFifoDepth) {
       ++overflows_;
       return;
     }
-    fifo_.push_back(sample_value(value));
-    max_level_ = std::max(max_level_, static_cast<int>(fifo_.size()));
+    fifo_[static_cast<std::size_t>((fifo_head_ + fifo_count_) % kFifoDepth)] = sample_value(value);
+    ++fifo_count_;
+    max_level_ = std::max(max_level_, fifo_count_);
   } else if (reg == kConfig) {
     if ((value & kConfigReset) != 0) {
       ++resets_;
-      fifo_.clear();
-      output_ = 0;
-      config_ = 7;
-      over_temperature_ = false;
-      was_playing_ = false;
+      power_on_state();
       return;
     }
     const bool enabling = (value & kConfigOutputEnable) != 0 && !output_enabled();
@@ -84,10 +91,21 @@ void Bos1901Emulator::execute(std::uint16_t command) {
   }
 }
 
-void Bos1901Emulator::transfer(std::span<const std::uint8_t> tx, std::span<std::uint8_t> rx) {
+int Bos1901Emulator::exchange(std::span<const std::uint8_t> tx, std::span<std::uint8_t> rx) noexcept {
+  if (unplugged_.load(std::memory_order_relaxed) || needs_reopen_) {
+    if (!needs_reopen_) {
+      advance();
+      power_on_state();  // the chip lost its supply with its cable
+    }
+    needs_reopen_ = true;
+    return ENODEV;
+  }
   if (failures_left_ > 0) {
     --failures_left_;
-    throw DeviceError(path_, "SPI transfer", failure_errno_);
+    return failure_errno_;
+  }
+  if (!rx.empty() && rx.size() != tx.size()) {
+    return EINVAL;
   }
   advance();
   for (std::size_t i = 0; i + 1 < tx.size(); i += 2) {
@@ -98,6 +116,28 @@ void Bos1901Emulator::transfer(std::span<const std::uint8_t> tx, std::span<std::
     }
     execute(static_cast<std::uint16_t>((tx[i] << 8) | tx[i + 1]));
   }
+  return 0;
+}
+
+void Bos1901Emulator::transfer(std::span<const std::uint8_t> tx, std::span<std::uint8_t> rx) {
+  throwing_transfers_.fetch_add(1, std::memory_order_relaxed);
+  if (const int error = exchange(tx, rx)) {
+    throw DeviceError(path_, "SPI transfer", error);
+  }
+}
+
+int Bos1901Emulator::try_transfer(std::span<const std::uint8_t> tx, std::span<std::uint8_t> rx) noexcept {
+  const int error = exchange(tx, rx);
+  if (error == 0) completed_try_transfers_.fetch_add(1, std::memory_order_relaxed);
+  return error;
+}
+
+void Bos1901Emulator::reopen() {
+  if (unplugged_.load(std::memory_order_relaxed)) {
+    throw DeviceError(path_, "open SPI device", ENOENT);
+  }
+  needs_reopen_ = false;
+  reopen_count_.fetch_add(1, std::memory_order_relaxed);
 }
 
 }  // namespace vimg

@@ -21,8 +21,8 @@ DeviceError::DeviceError(std::string device_path, const std::string& what_failed
       device_path_(std::move(device_path)),
       error_number_(error_number) {}
 
-bool DeviceError::transient() const {
-  switch (error_number_) {
+bool transient_error(int error_number) noexcept {
+  switch (error_number) {
     case EREMOTEIO:
     case ENXIO:
     case EIO:
@@ -35,8 +35,12 @@ bool DeviceError::transient() const {
   }
 }
 
-bool DeviceError::device_gone() const {
-  return error_number_ == ENODEV || error_number_ == ENOENT || error_number_ == ESHUTDOWN;
+bool device_gone_error(int error_number) noexcept {
+  return error_number == ENODEV || error_number == ENOENT || error_number == ESHUTDOWN;
 }
+
+bool DeviceError::transient() const { return transient_error(error_number_); }
+
+bool DeviceError::device_gone() const { return device_gone_error(error_number_); }
 
 }  // namespace vimg

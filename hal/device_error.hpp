@@ -24,6 +24,11 @@ class DeviceError : public std::runtime_error {
   int error_number_ = 0;
 };
 
+// The same classification for a bare errno value, for the real-time paths that return one instead
+// of throwing. Both are noexcept and allocation-free.
+bool transient_error(int error_number) noexcept;
+bool device_gone_error(int error_number) noexcept;
+
 // "PATH: WHAT: strerror(errno)"
 std::string device_error_message(const std::string& device_path, const std::string& what_failed,
                                  int error_number);

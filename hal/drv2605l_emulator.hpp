@@ -53,6 +53,9 @@ class Drv2605lEmulator final : public I2cTarget {
   void raise_status(std::uint8_t bits) { latched_status_ |= bits; }
 
   const std::vector<RegisterAccess>& traffic() const { return traffic_; }
+  // Room for `accesses` more recorded accesses, so that recording allocates nothing meanwhile
+  // (tests that count the driver's allocations).
+  void reserve_traffic(std::size_t accesses) { traffic_.reserve(traffic_.size() + accesses); }
   std::vector<RegisterAccess> writes_to(std::uint8_t reg) const;
   const std::vector<std::string>& violations() const { return violations_; }
   std::int64_t enable_rise_time_us() const { return enable_rise_us_; }

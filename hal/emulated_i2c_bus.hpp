@@ -1,5 +1,11 @@
 #pragma once
 // Test double for I2cBus: targets (chip emulators) answer at their addresses; faults can be injected.
+// It counts the throwing transfers (initialization, calibration) apart from the real-time ones, and
+// the reopens, so that tests can see which path a driver took.
+//
+// Threads: one thread at a time transfers (the driver's DeviceLink decides which); set_unplugged()
+// and the counters may be used from any thread.
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <span>
@@ -30,29 +36,40 @@ class EmulatedI2cBus final : public I2cBus {
     failures_left_ = count;
     failure_errno_ = error_number;
   }
-  // While unplugged every transfer fails with ENODEV and reopen() fails with ENOENT.
-  void set_unplugged(bool unplugged) { unplugged_ = unplugged; }
+  // While unplugged every transfer fails with ENODEV and reopen() fails with ENOENT; after it comes
+  // back, transfers fail with ENODEV until reopen().
+  void set_unplugged(bool unplugged) { unplugged_.store(unplugged, std::memory_order_relaxed); }
 
   void write(std::uint8_t address, std::span<const std::uint8_t> bytes) override;
   void write_read(std::uint8_t address, std::span<const std::uint8_t> out,
                   std::span<std::uint8_t> in) override;
+  int try_write(std::uint8_t address, std::span<const std::uint8_t> bytes) noexcept override;
+  int try_write_read(std::uint8_t address, std::span<const std::uint8_t> out,
+                     std::span<std::uint8_t> in) noexcept override;
   void reopen() override;
   const std::string& path() const override { return path_; }
 
-  int failed_transfers() const { return failed_transfers_; }
-  int reopen_count() const { return reopen_count_; }
+  int failed_transfers() const { return failed_transfers_.load(std::memory_order_relaxed); }
+  int reopen_count() const { return reopen_count_.load(std::memory_order_relaxed); }
+  // Calls of write() / write_read(), failed or not.
+  int throwing_transfers() const { return throwing_transfers_.load(std::memory_order_relaxed); }
+  // Calls of try_write() / try_write_read() that reached the chip.
+  int completed_try_transfers() const { return completed_try_transfers_.load(std::memory_order_relaxed); }
 
  private:
-  I2cTarget& target_or_throw(std::uint8_t address, const char* what);
+  // 0 and the target, or the errno value the transfer fails with (counted).
+  int reach(std::uint8_t address, I2cTarget*& target) noexcept;
 
   std::string path_;
   std::map<std::uint8_t, I2cTarget*> targets_;
   int failures_left_ = 0;
   int failure_errno_ = 0;
-  bool unplugged_ = false;
+  std::atomic<bool> unplugged_{false};
   bool needs_reopen_ = false;
-  int failed_transfers_ = 0;
-  int reopen_count_ = 0;
+  std::atomic<int> failed_transfers_{0};
+  std::atomic<int> reopen_count_{0};
+  std::atomic<int> throwing_transfers_{0};
+  std::atomic<int> completed_try_transfers_{0};
 };
 
 }  // namespace vimg

@@ -1,5 +1,8 @@
 #pragma once
 // USB HID devices. Real: HidapiHost (hidapi 0.13, hidraw backend). Test double: HidHapticEmulator.
+// Threads: one thread at a time uses a device (its driver's DeviceLink decides which); write() and
+// the reports throw with a message (control and service threads), try_write() is for the
+// real-time thread: it returns 0 or the errno value and never throws or allocates.
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -22,6 +25,8 @@ class HidDevice {
   virtual ~HidDevice() = default;
   // Output report; byte 0 is the report id. Throws DeviceError.
   virtual void write(std::span<const std::uint8_t> report) = 0;
+  // The same for the real-time thread: 0, or the errno value (EIO when the backend gives none).
+  virtual int try_write(std::span<const std::uint8_t> report) noexcept = 0;
   // Feature report; set buffer[0] to the report id. Returns the bytes read (id included).
   virtual std::size_t get_feature_report(std::span<std::uint8_t> buffer) = 0;
   virtual void send_feature_report(std::span<const std::uint8_t> report) = 0;

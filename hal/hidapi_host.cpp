@@ -1,4 +1,6 @@
+#include <fcntl.h>
 #include <hidapi.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <stdexcept>
@@ -21,14 +23,27 @@ std::string narrow(const wchar_t* text) {
 
 class HidapiDevice final : public HidDevice {
  public:
-  HidapiDevice(hid_device* handle, std::string path) : handle_(handle), path_(std::move(path)) {}
-  ~HidapiDevice() override { hid_close(handle_); }
+  // The real-time writes go straight to the hidraw node with write(2), which is all hid_write does
+  // on this backend, except that hid_write formats an error text (malloc) when it fails.
+  HidapiDevice(hid_device* handle, std::string path)
+      : handle_(handle), path_(std::move(path)), raw_fd_(::open(path_.c_str(), O_WRONLY | O_CLOEXEC)) {}
+  ~HidapiDevice() override {
+    if (raw_fd_ >= 0) ::close(raw_fd_);
+    hid_close(handle_);
+  }
   HidapiDevice(const HidapiDevice&) = delete;
   HidapiDevice& operator=(const HidapiDevice&) = delete;
 
   void write(std::span<const std::uint8_t> report) override {
     errno = 0;
     if (hid_write(handle_, report.data(), report.size()) < 0) fail("write output report");
+  }
+  int try_write(std::span<const std::uint8_t> report) noexcept override {
+    errno = 0;
+    const auto written = raw_fd_ >= 0 ? ::write(raw_fd_, report.data(), report.size())
+                                      : hid_write(handle_, report.data(), report.size());
+    if (written >= 0) return 0;
+    return errno != 0 ? errno : EIO;
   }
   std::size_t get_feature_report(std::span<std::uint8_t> buffer) override {
     errno = 0;
@@ -49,6 +64,7 @@ class HidapiDevice final : public HidDevice {
   }
   hid_device* handle_;
   std::string path_;
+  int raw_fd_ = -1;  // the hidraw node, or -1 when it cannot be opened (then hid_write)
 };
 
 }  // namespace

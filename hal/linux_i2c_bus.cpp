@@ -32,20 +32,18 @@ LinuxI2cBus::~LinuxI2cBus() {
   }
 }
 
-void LinuxI2cBus::write(std::uint8_t address, std::span<const std::uint8_t> bytes) {
+int LinuxI2cBus::try_write(std::uint8_t address, std::span<const std::uint8_t> bytes) noexcept {
   i2c_msg message{};
   message.addr = address;
   message.flags = 0;
   message.len = static_cast<__u16>(bytes.size());
   message.buf = const_cast<__u8*>(bytes.data());  // the kernel only reads a write message
   i2c_rdwr_ioctl_data transfer{&message, 1};
-  if (::ioctl(fd_, I2C_RDWR, &transfer) < 0) {
-    throw DeviceError(path_, "I2C write to address " + std::to_string(address), errno);
-  }
+  return ::ioctl(fd_, I2C_RDWR, &transfer) < 0 ? errno : 0;
 }
 
-void LinuxI2cBus::write_read(std::uint8_t address, std::span<const std::uint8_t> out,
-                             std::span<std::uint8_t> in) {
+int LinuxI2cBus::try_write_read(std::uint8_t address, std::span<const std::uint8_t> out,
+                                std::span<std::uint8_t> in) noexcept {
   i2c_msg messages[2]{};
   messages[0].addr = address;
   messages[0].flags = 0;
@@ -56,8 +54,19 @@ void LinuxI2cBus::write_read(std::uint8_t address, std::span<const std::uint8_t>
   messages[1].len = static_cast<__u16>(in.size());
   messages[1].buf = in.data();
   i2c_rdwr_ioctl_data transfer{messages, 2};
-  if (::ioctl(fd_, I2C_RDWR, &transfer) < 0) {
-    throw DeviceError(path_, "I2C read from address " + std::to_string(address), errno);
+  return ::ioctl(fd_, I2C_RDWR, &transfer) < 0 ? errno : 0;
+}
+
+void LinuxI2cBus::write(std::uint8_t address, std::span<const std::uint8_t> bytes) {
+  if (const int error = try_write(address, bytes)) {
+    throw DeviceError(path_, "I2C write to address " + std::to_string(address), error);
+  }
+}
+
+void LinuxI2cBus::write_read(std::uint8_t address, std::span<const std::uint8_t> out,
+                             std::span<std::uint8_t> in) {
+  if (const int error = try_write_read(address, out, in)) {
+    throw DeviceError(path_, "I2C read from address " + std::to_string(address), error);
   }
 }
 

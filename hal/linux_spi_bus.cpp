@@ -12,23 +12,27 @@
 
 namespace vimg {
 
-LinuxSpiBus::LinuxSpiBus(std::string device_path, SpiSettings settings)
-    : path_(std::move(device_path)), settings_(settings) {
-  fd_ = ::open(path_.c_str(), O_RDWR | O_CLOEXEC);
-  if (fd_ < 0) {
+int LinuxSpiBus::open_configured() const {
+  const int fd = ::open(path_.c_str(), O_RDWR | O_CLOEXEC);
+  if (fd < 0) {
     throw DeviceError(path_, "open SPI device", errno);
   }
   auto configure = [&](unsigned long request, const void* value, const char* what) {
-    if (::ioctl(fd_, request, value) < 0) {
+    if (::ioctl(fd, request, value) < 0) {
       const int error_number = errno;
-      ::close(fd_);
-      fd_ = -1;
+      ::close(fd);
       throw DeviceError(path_, what, error_number);
     }
   };
   configure(SPI_IOC_WR_MODE, &settings_.mode, "set SPI mode");
   configure(SPI_IOC_WR_BITS_PER_WORD, &settings_.bits_per_word, "set SPI bits per word");
   configure(SPI_IOC_WR_MAX_SPEED_HZ, &settings_.speed_hz, "set SPI speed");
+  return fd;
+}
+
+LinuxSpiBus::LinuxSpiBus(std::string device_path, SpiSettings settings)
+    : path_(std::move(device_path)), settings_(settings) {
+  fd_ = open_configured();
 }
 
 LinuxSpiBus::~LinuxSpiBus() {
@@ -37,9 +41,9 @@ LinuxSpiBus::~LinuxSpiBus() {
   }
 }
 
-void LinuxSpiBus::transfer(std::span<const std::uint8_t> tx, std::span<std::uint8_t> rx) {
+int LinuxSpiBus::try_transfer(std::span<const std::uint8_t> tx, std::span<std::uint8_t> rx) noexcept {
   if (!rx.empty() && rx.size() != tx.size()) {
-    throw std::invalid_argument(path_ + ": SPI receive buffer must match the transmit length");
+    return EINVAL;
   }
   spi_ioc_transfer message{};
   message.tx_buf = reinterpret_cast<std::uintptr_t>(tx.data());
@@ -47,9 +51,24 @@ void LinuxSpiBus::transfer(std::span<const std::uint8_t> tx, std::span<std::uint
   message.len = static_cast<std::uint32_t>(tx.size());
   message.speed_hz = settings_.speed_hz;
   message.bits_per_word = settings_.bits_per_word;
-  if (::ioctl(fd_, SPI_IOC_MESSAGE(1), &message) < 0) {
-    throw DeviceError(path_, "SPI transfer of " + std::to_string(tx.size()) + " bytes", errno);
+  return ::ioctl(fd_, SPI_IOC_MESSAGE(1), &message) < 0 ? errno : 0;
+}
+
+void LinuxSpiBus::transfer(std::span<const std::uint8_t> tx, std::span<std::uint8_t> rx) {
+  if (!rx.empty() && rx.size() != tx.size()) {
+    throw std::invalid_argument(path_ + ": SPI receive buffer must match the transmit length");
   }
+  if (const int error = try_transfer(tx, rx)) {
+    throw DeviceError(path_, "SPI transfer of " + std::to_string(tx.size()) + " bytes", error);
+  }
+}
+
+void LinuxSpiBus::reopen() {
+  const int fd = open_configured();
+  if (fd_ >= 0) {
+    ::close(fd_);
+  }
+  fd_ = fd;
 }
 
 }  // namespace vimg
