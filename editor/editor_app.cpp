@@ -614,7 +614,7 @@ void EditorApp::autosave_if_due() {
 }
 
 void EditorApp::offer_recovery() {
-  if (recovery_.exists()) recovery_prompt_opening_ = true;
+  if (recovery_.adopt_orphan()) recovery_prompt_opening_ = true;
 }
 
 void EditorApp::update_title() {
