@@ -1,5 +1,5 @@
 // vimg-probe: explore a volume scene with the mouse (docs/volume.md, "Virtual probe").
-//   vimg-probe SCENE [--frames N] [--move X_MM,Z_MM] [--screenshot OUT.bmp]
+//   vimg-probe SCENE [--frames N] [--move X_MM,Z_MM] [--screenshot OUT.bmp]   (see --help)
 // The window shows the slice y = const of the scene's first scalar data (x across, z down), the
 // flow of its first vector data as ticks, the probe (white), and the kinaesthetic force (red
 // line, 20 px/N). The mouse moves the probe in the slice; the wheel moves the slice in y. The
@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/probe/probe_args.hpp"
 #include "apps/probe/probe_session.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
@@ -73,27 +74,15 @@ int fail(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string scene_path, screenshot;
-  int frames = -1;
-  bool scripted_move = false;
-  double move_x = 0.0, move_z = 0.0;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--frames" && i + 1 < argc) frames = std::atoi(argv[++i]);
-    else if (a == "--screenshot" && i + 1 < argc) screenshot = argv[++i];
-    else if (a == "--move" && i + 1 < argc) {
-      scripted_move = std::sscanf(argv[++i], "%lf,%lf", &move_x, &move_z) == 2;
-      if (!scripted_move) return fail("--move needs X_MM,Z_MM");
-    } else if (a.rfind("--", 0) != 0 && scene_path.empty()) scene_path = a;
-    else {
-      std::fprintf(stderr, "usage: vimg-probe SCENE [--frames N] [--move X_MM,Z_MM] [--screenshot OUT.bmp]\n");
-      return 2;
-    }
-  }
-  if (scene_path.empty()) {
-    std::fprintf(stderr, "usage: vimg-probe SCENE [--frames N] [--move X_MM,Z_MM] [--screenshot OUT.bmp]\n");
-    return 2;
-  }
+  const vimg::probe::ProbeArgsResult parsed = vimg::probe::parse_probe_args(argc, argv);
+  if (!parsed.args) return parsed.exit_code;
+  const vimg::probe::ProbeArgs& args = *parsed.args;
+  const std::string& scene_path = args.scene_path;
+  const std::string& screenshot = args.screenshot;
+  const int frames = args.frames;
+  const bool scripted_move = args.move_mm.has_value();
+  const double move_x = scripted_move ? args.move_mm->first : 0.0;
+  const double move_z = scripted_move ? args.move_mm->second : 0.0;
   vimg::VolumeSceneLoadResult loaded = vimg::load_volume_scene_file(scene_path);
   for (const auto& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
   if (!loaded.ok()) return 1;
@@ -136,7 +125,7 @@ int main(int argc, char** argv) {
   std::vector<float> samples;
   samples.reserve(4096);
   int mouse_x = view.width / 2, mouse_y = view.height / 2;
-  for (int frame = 0; running && frames != 0; ++frame) {
+  for (int frame = 0; running; ++frame) {
     SDL_Event e;
     while (SDL_PollEvent(&e)) {
       if (e.type == SDL_QUIT || (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE)) running = false;
@@ -198,7 +187,7 @@ int main(int argc, char** argv) {
     }
     SDL_RenderPresent(renderer);
     if (frames > 0 && frame + 1 >= frames) break;
-    if (frames < 0) SDL_Delay(5);
+    if (frames == 0) SDL_Delay(5);
   }
   if (audio) SDL_CloseAudioDevice(audio);
   SDL_DestroyTexture(slice);

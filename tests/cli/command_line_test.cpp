@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "cmdline/command_line.hpp"
@@ -18,9 +19,9 @@ struct CommandRun {
   std::string out;
 };
 
-// Runs `vimg ARGS`, capturing stdout and stderr together.
-CommandRun vimg(const std::string& args) {
-  const std::string cmd = "'" VIMG_BINARY_DIR "/cli/vimg' " + args + " 2>&1";
+// Runs `PROGRAM ARGS` (a path below the build folder), capturing stdout and stderr together.
+CommandRun run_program(const std::string& program, const std::string& args) {
+  const std::string cmd = "'" VIMG_BINARY_DIR "/" + program + "' " + args + " 2>&1";
   CommandRun run;
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (!pipe) return run;
@@ -31,6 +32,8 @@ CommandRun vimg(const std::string& args) {
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return run;
 }
+
+CommandRun vimg(const std::string& args) { return run_program("cli/vimg", args); }
 
 TEST(VimgConventions, HelpAndVersionExitZeroForEveryCommand) {
   for (const char* command : {"", "validate", "convert", "info", "render", "gesture", "gesture line", "gesture arc",
@@ -70,6 +73,44 @@ TEST(VimgConventions, NumbersMustBeFiniteAndInRange) {
   EXPECT_NE(point.out.find("not X,Y with two finite numbers"), std::string::npos) << point.out;
   EXPECT_EQ(vimg("gesture line --from 0,0 --to 10,0 --out g.csv --pressure 1.5").exit_code, 2);
   EXPECT_EQ(vimg("gesture circle --center 0,0 --radius -1 --out g.csv").exit_code, 2);
+}
+
+// Every program of the project, where this build has it (the sanitizer builds leave out the GUI).
+TEST(ProgramConventions, EveryProgramAnswersHelpVersionAndUsageErrorsAlike) {
+  int checked = 0;
+  for (const char* program : {"cli/vimg", "editor/vimg-editor", "apps/probe/vimg-probe"}) {
+    if (!std::filesystem::exists(std::string(VIMG_BINARY_DIR "/") + program)) continue;
+    ++checked;
+    const std::string name = std::filesystem::path(program).filename().string();
+    const CommandRun help = run_program(program, "--help");
+    EXPECT_EQ(help.exit_code, 0) << name;
+    EXPECT_NE(help.out.find("Usage: " + name), std::string::npos) << help.out;
+    const CommandRun version = run_program(program, "--version");
+    EXPECT_EQ(version.exit_code, 0) << name;
+    EXPECT_EQ(version.out, name + " " + cmdline::version() + "\n");
+    const CommandRun unknown = run_program(program, "--no-such-option");
+    EXPECT_EQ(unknown.exit_code, 2) << name << "\n" << unknown.out;
+    EXPECT_EQ(unknown.out.rfind(name + ": error: ", 0), 0u) << unknown.out;
+  }
+  if (checked == 0) GTEST_SKIP() << "no program built";
+}
+
+TEST(ProgramConventions, ProbeRefusesEndlessFramesAndNonFiniteMoves) {
+  const std::string probe = "apps/probe/vimg-probe";
+  if (!std::filesystem::exists(std::string(VIMG_BINARY_DIR "/") + probe)) GTEST_SKIP() << "no GUI in this build";
+  EXPECT_EQ(run_program(probe, "scene.xml --frames -1").exit_code, 2);
+  EXPECT_EQ(run_program(probe, "scene.xml --frames 0").exit_code, 2);
+  EXPECT_EQ(run_program(probe, "scene.xml --frames 3 --move nan,1").exit_code, 2);
+  EXPECT_EQ(run_program(probe, "scene.xml --move 1,1").exit_code, 2);  // --move needs --frames
+}
+
+TEST(ProgramConventions, EditorRefusesBadNumbers) {
+  const std::string editor = "editor/vimg-editor";
+  if (!std::filesystem::exists(std::string(VIMG_BINARY_DIR "/") + editor)) GTEST_SKIP() << "no GUI in this build";
+  for (const char* bad : {"--rate nan", "--zoom inf", "--size 10x10", "--px-per-mm -1", "--output bogus:1",
+                          "--autosave-interval 0"}) {
+    EXPECT_EQ(run_program(editor, bad).exit_code, 2) << bad;
+  }
 }
 
 }  // namespace
