@@ -17,10 +17,8 @@ HapticLoop::HapticLoop(HapticPort& port, HapticLoopConfig config)
   cycle_ = HapticCycle(config_.cycle);
 }
 
-HapticLoop::~HapticLoop() {
-  stop();
-  delete pending_.exchange(nullptr);
-}
+// owned_ is the one owner of every scene, the pending one included: the atomic pointers only lend.
+HapticLoop::~HapticLoop() { stop(); }
 
 void HapticLoop::release_retired() {
   if (HapticScene* r = retired_.exchange(nullptr)) {

@@ -110,6 +110,23 @@ TEST(HapticLoop, SceneSwapsWhileRunningCrossFade) {
   }
 }
 
+// Destroying a running loop that holds a pending scene while a cross-fade is in progress: each
+// scene must be deleted exactly once (ASan sees a double free or a use after free otherwise).
+TEST(HapticLoop, DestroyedWhileRunningWithAPendingSceneDuringACrossFade) {
+  SimulatedForceDevice sim(std::vector<HandPathPoint>{HandPathPoint{0.0, Vec3{}}});
+  {
+    HapticLoop loop(sim, {1000.0, {3.3, 0.2, 0.0, 10.0}});  // a 10 s cross-fade
+    loop.submit_scene(constant_scene({0.1, 0.0, 0.0}));
+    ASSERT_TRUE(loop.start());
+    wait_for_cycles(loop, 20);
+    loop.submit_scene(constant_scene({0.0, 0.1, 0.0}));  // taken at once: the fade starts
+    wait_for_cycles(loop, loop.cycles() + 20);
+    loop.submit_scene(constant_scene({0.0, 0.0, 0.1}));  // waits: no scene is taken while fading
+    ASSERT_TRUE(loop.running());
+  }
+  EXPECT_EQ(sim.force_N(), Vec3{});
+}
+
 TEST(HapticLoop, RejectsRatesOutside100To4000Hz) {
   SimulatedForceDevice sim(std::vector<HandPathPoint>{HandPathPoint{0.0, Vec3{}}});
   HapticLoop fast(sim, {8000.0, {}});
