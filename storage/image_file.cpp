@@ -9,7 +9,7 @@
 
 #include "storage/atomic_file.hpp"
 #include "storage/image_io.hpp"
-#include "storage/image_limits.hpp"
+#include "storage/limits.hpp"
 #include "storage/picture.hpp"
 #include "storage/png_codec.hpp"
 
@@ -43,7 +43,7 @@ LoadResult load_image_file(const std::filesystem::path& path) {
   for (;;) {
     const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
     bytes.append(buffer, n);
-    if (bytes.size() > kMaxFileBytes) {
+    if (bytes.size() > kMaxImageFileBytes) {
       too_large = true;
       break;
     }
@@ -52,7 +52,7 @@ LoadResult load_image_file(const std::filesystem::path& path) {
   const bool read_error = std::ferror(file) != 0;
   std::fclose(file);
   if (too_large) {
-    return failure(name, "file is larger than " + std::to_string(kMaxFileBytes / (1024 * 1024)) + " MiB");
+    return failure(name, "file is larger than " + std::to_string(kMaxImageFileBytes / (1024 * 1024)) + " MiB");
   }
   if (read_error) return failure(name, "cannot read the file");
   if (!looks_like_png(bytes)) return parse_image_xml(bytes, name);

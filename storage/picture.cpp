@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <numbers>
 
-#include "storage/image_limits.hpp"
+#include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 
 namespace vimg {

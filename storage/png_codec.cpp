@@ -9,14 +9,11 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "storage/image_limits.hpp"
+#include "storage/limits.hpp"
 
 namespace vimg {
 
 namespace {
-
-constexpr int kMaxPngSide = 200000;                  // refuse larger declared sizes before decoding
-constexpr double kMaxDecodedPixels = 4.0 * kMaxPngPixels;
 
 struct ErrorSink {
   char message[256] = {};
@@ -153,11 +150,11 @@ bool decode_text(ReadState* state, ErrorSink* sink) {
   png_set_crc_action(png, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
 #endif
   png_set_user_limits(png, kMaxPngSide, kMaxPngSide);
-  png_set_chunk_malloc_max(png, kMaxFileBytes + 1024 * 1024);
+  png_set_chunk_malloc_max(png, kMaxImageFileBytes + 1024 * 1024);
   png_read_info(png, info);
   const double pixels = static_cast<double>(png_get_image_width(png, info)) *
                         static_cast<double>(png_get_image_height(png, info));
-  if (pixels > kMaxDecodedPixels) png_error(png, "the picture is too large to decode");
+  if (pixels > kMaxDecodedPngPixels) png_error(png, "the picture is too large to decode");
   const int passes = png_set_interlace_handling(png);
   png_read_update_info(png, info);
   const png_size_t row_bytes = png_get_rowbytes(png, info);

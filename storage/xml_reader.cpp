@@ -14,7 +14,7 @@
 #include <utility>
 
 #include "storage/image_io.hpp"
-#include "storage/image_limits.hpp"
+#include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 
 namespace vimg {
@@ -101,8 +101,8 @@ class Reader {
 
   LoadResult run(std::string_view xml) {
     LoadResult result;
-    if (xml.size() > kMaxFileBytes) {
-      error(0, "file is larger than " + std::to_string(kMaxFileBytes / (1024 * 1024)) + " MiB");
+    if (xml.size() > kMaxImageFileBytes) {
+      error(0, "file is larger than " + std::to_string(kMaxImageFileBytes / (1024 * 1024)) + " MiB");
       result.diagnostics = std::move(diagnostics_);
       return result;
     }

@@ -18,6 +18,7 @@
 #include "primitives/volume/scalar_grid.hpp"
 #include "primitives/volume/vector_grid.hpp"
 #include "storage/diagnostic.hpp"
+#include "storage/limits.hpp"
 
 namespace vimg {
 
@@ -27,9 +28,6 @@ struct NrrdLoadResult {
   std::vector<Diagnostic> diagnostics;
   bool ok() const { return scalar.has_value() || vector.has_value(); }
 };
-
-// Largest accepted number of samples (voxels times components): 2^27, 512 MiB as float.
-inline constexpr std::size_t kMaxNrrdSamples = std::size_t{1} << 27;
 
 // Parses a whole NRRD file held in memory; `file_name` is used in messages only.
 NrrdLoadResult parse_nrrd(std::string_view bytes, const std::string& file_name);

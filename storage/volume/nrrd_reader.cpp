@@ -251,14 +251,14 @@ class Reader {
     std::size_t samples = 1;
     for (std::size_t i = 0; i < size_words.size(); ++i) {
       const auto n = parse_integer(size_words[i]);
-      if (!n || *n < 1 || *n > static_cast<long long>(kMaxNrrdSamples)) {
+      if (!n || *n < 1 || *n > static_cast<long long>(kMaxVolumeSamples)) {
         error(sizes->line, "size '" + size_words[i] + "' is not a positive integer within limits");
         return false;
       }
       sizes_[i] = static_cast<int>(*n);
       samples *= static_cast<std::size_t>(*n);
-      if (samples > kMaxNrrdSamples) {
-        error(sizes->line, "volume has more than " + std::to_string(kMaxNrrdSamples) + " samples");
+      if (samples > kMaxVolumeSamples) {
+        error(sizes->line, "volume has more than " + std::to_string(kMaxVolumeSamples) + " samples");
         return false;
       }
     }

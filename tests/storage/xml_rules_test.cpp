@@ -11,7 +11,7 @@
 #include <string>
 
 #include "storage/image_io.hpp"
-#include "storage/image_limits.hpp"
+#include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 #include "storage_test_support.hpp"
 
@@ -181,7 +181,7 @@ TEST(XmlRules, ErrorLinesAreTheLinesOfTheProblem) {
 
 TEST(XmlRules, FilesOverTheSizeLimitAreRejectedBeforeParsing) {
   std::string xml = document("<dot x=\"1\" y=\"1\"/>\n");
-  xml.append(kMaxFileBytes + 1 - xml.size(), ' ');
+  xml.append(kMaxImageFileBytes + 1 - xml.size(), ' ');
   const LoadResult r = parse_image_xml(xml, "big.vimg");
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.diagnostics[0].to_string(), "big.vimg: error: file is larger than 64 MiB");
@@ -192,7 +192,7 @@ TEST(XmlRules, FilesOverTheSizeLimitAreRejectedBeforeParsing) {
 TEST(XmlRules, LoadFileRejectsOversizedFiles) {
   test::TempDir dir("big");
   std::string xml = document("");
-  xml.append(kMaxFileBytes + 10 - xml.size(), '\n');
+  xml.append(kMaxImageFileBytes + 10 - xml.size(), '\n');
   test::write_text_file(dir / "big.vimg", xml);
   const LoadResult r = load_image_file(dir / "big.vimg");
   ASSERT_FALSE(r.ok());

@@ -1,0 +1,60 @@
+#pragma once
+// Every limit of the file formats and their readers, in one place (docs/limits.md gives each value
+// its reason). A reader checks a limit before it allocates for what the input declares, and refuses
+// with `FILE:LINE: error: … (limit N)`.
+#include <cstddef>
+
+namespace vimg {
+
+// --- The image format (spec section 1) -------------------------------------------------------------
+inline constexpr int kFormatMajor = 1;               // the format version this code reads and writes
+inline constexpr int kFormatMinor = 0;
+inline constexpr double kMaxCanvasMm = 10000.0;      // width and height in (0, kMaxCanvasMm]
+inline constexpr double kMaxFrequencyHz = 1000.0;    // line frequency in (0, kMaxFrequencyHz]
+inline constexpr int kMaxGroupDepth = 32;            // groups nest at most this deep (spec)
+
+// --- File sizes (bytes read before any parsing) ------------------------------------------------------
+inline constexpr std::size_t kMiB = std::size_t{1} << 20;
+inline constexpr std::size_t kMaxImageFileBytes = 64 * kMiB;  // image XML, a PNG file, the XML inside a PNG
+inline constexpr std::size_t kMaxSceneFileBytes = 4 * kMiB;   // a volume scene (.vscene.xml)
+inline constexpr std::size_t kMaxCsvFileBytes = 64 * kMiB;    // a gesture or probe-path CSV
+inline constexpr std::size_t kMaxNrrdHeaderBytes = 1 * kMiB;  // the text header of a NRRD volume
+inline constexpr std::size_t kMaxVolumeFileBytes = 1024 * kMiB;  // a whole NRRD file (header and data)
+
+// --- XML structure (images and volume scenes; checked before tinyxml2 builds its tree) --------------
+inline constexpr std::size_t kMaxXmlElements = 1'000'000;  // elements, comments and other markup per file
+inline constexpr std::size_t kMaxAttributesPerElement = 64;
+inline constexpr int kMaxXmlNestingDepth = 64;             // elements inside elements, the root is depth 1
+inline constexpr std::size_t kMaxPolygonPoints = 100'000;  // points of one polygon surface
+
+// --- PNG -------------------------------------------------------------------------------------------
+inline constexpr double kMaxPngPixels = 25'000'000.0;         // PNG export: width_px * height_px at most
+inline constexpr double kMaxDecodedPngPixels = 100'000'000.0;  // PNG import: pixels decoded at most
+inline constexpr int kMaxPngSide = 200'000;                   // PNG import: width and height at most
+
+// --- Volumes (NRRD) --------------------------------------------------------------------------------
+inline constexpr std::size_t kMaxVolumeSamples = std::size_t{1} << 27;  // voxels x components (512 MiB as float)
+inline constexpr std::size_t kMaxVolumeDataBytes = 512 * kMiB;  // declared data: samples x type size (raw or inflated)
+inline constexpr double kMaxDeviceRateHz = 4000.0;              // a scene's device rate, Hz
+
+// --- Gestures (player/gesture.cpp enforces these) ----------------------------------------------------
+inline constexpr std::size_t kMaxGestureRows = 1'000'000;
+inline constexpr double kMaxGestureDurationS = 600.0;   // last time minus first time
+inline constexpr double kMaxGestureTimeS = 86'400.0;    // |time_s| at most
+inline constexpr double kMaxGestureCoordinateMm = kMaxCanvasMm;  // |x_mm|, |y_mm| at most
+
+// --- Probe paths (storage/volume/probe_path_io.cpp) ------------------------------------------------
+inline constexpr std::size_t kMaxProbePathRows = 1'000'000;
+inline constexpr double kMaxProbePathDurationS = 600.0;   // last time minus first time
+inline constexpr double kMaxProbeTimeS = 86'400.0;        // |time_s| at most
+inline constexpr double kMaxProbeCoordinateMm = 10'000.0;  // |x_mm|, |y_mm|, |z_mm| at most
+// Rows a probe render may produce: duration x rate, checked before reserving (at most 2 400 001).
+inline constexpr std::size_t kMaxProbeRenderRows =
+    static_cast<std::size_t>(kMaxProbePathDurationS * kMaxDeviceRateHz) + 1;
+
+// --- Messages ----------------------------------------------------------------------------------------
+inline constexpr std::size_t kMaxQuotedInputBytes = 64;  // input quoted in a message, before "..."
+inline constexpr std::size_t kMaxMessageBytes = 512;     // one diagnostic's message text
+inline constexpr std::size_t kMaxDiagnosticsPerFile = 50;  // then one line with the count of the rest
+
+}  // namespace vimg
