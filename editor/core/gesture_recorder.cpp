@@ -1,5 +1,7 @@
 #include "editor/core/gesture_recorder.hpp"
 
+#include "storage/atomic_file.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <fstream>
@@ -55,20 +57,7 @@ std::string GestureRecorder::to_csv() const {
 }
 
 std::optional<std::string> GestureRecorder::save(const std::filesystem::path& path) const {
-  const std::filesystem::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << to_csv();
-    out.close();
-    if (!out) return tmp.string() + ": cannot write";
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    return path.string() + ": cannot write";
-  }
-  return std::nullopt;
+  return write_file_atomically(path, to_csv());
 }
 
 }  // namespace vimg::editor

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "editor/core/recent_files.hpp"
@@ -50,6 +52,35 @@ TEST(RecentFiles, MostRecentFirstWithoutDuplicatesAndPersistent) {
   RecentFiles reloaded(store, 3);
   EXPECT_EQ(reloaded.paths(), (std::vector<std::string>{"/d.vimg", "/c.vimg", "/a.vimg"}));
   std::filesystem::remove(store);
+}
+
+TEST(RecentFiles, ADamagedOrHostileStoreGivesOnlyPlausiblePaths) {
+  const std::string text = std::string("/ok/a.vimg\nrelative.vimg\n/esc\x1b[31m.vimg\n\n/ok/a.vimg\n/") +
+                           std::string(5000, 'x') + "\n/ok/b.png";
+  EXPECT_EQ(parse_recent_files(text, 10), (std::vector<std::string>{"/ok/a.vimg", "/ok/b.png"}));
+  EXPECT_EQ(parse_recent_files(text, 1), (std::vector<std::string>{"/ok/a.vimg"}));
+  // A store far over the read limit costs no more than the limit.
+  const auto store = std::filesystem::path(VIMG_BINARY_DIR) / "editor_test_recent_huge.txt";
+  { std::ofstream(store) << "/first.vimg\n" << std::string(4 * kMaxRecentFilesBytes, 'y'); }
+  RecentFiles recent(store, 10);
+  EXPECT_EQ(recent.paths(), (std::vector<std::string>{"/first.vimg"}));
+  std::filesystem::remove(store);
+}
+
+TEST(GestureRecorder, SavesAtomicallyAndReportsAFailureWithoutLeavingATemporary) {
+  GestureRecorder recorder;
+  recorder.add(GestureSample{0.0, 0, 1.0, 2.0, std::nullopt, GesturePhase::down});
+  recorder.add(GestureSample{0.1, 0, 3.0, 2.0, std::nullopt, GesturePhase::up});
+  const auto dir = std::filesystem::path(VIMG_BINARY_DIR) / "editor_test_recorder";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "blocked.csv" / "inside");
+  EXPECT_EQ(recorder.save(dir / "take.csv"), std::nullopt);
+  EXPECT_EQ(recorder.to_csv().size(), std::filesystem::file_size(dir / "take.csv"));
+  EXPECT_NE(recorder.save(dir / "blocked.csv"), std::nullopt);
+  int entries = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) entries += e.path().filename().string()[0] == '.' ? 1 : 0;
+  EXPECT_EQ(entries, 0) << "no temporary file is left behind";
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
