@@ -11,6 +11,7 @@
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
 #include "storage/picture.hpp"
+#include "storage/read_file.hpp"
 #include "storage/png_codec.hpp"
 
 namespace vimg {
@@ -33,28 +34,9 @@ bool has_png_extension(const std::filesystem::path& path) {
 
 LoadResult load_image_file(const std::filesystem::path& path) {
   const std::string name = path.string();
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) return failure(name, "is a directory, not an image file");
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (file == nullptr) return failure(name, std::string("cannot open: ") + std::strerror(errno));
-  std::string bytes;
-  char buffer[65536];
-  bool too_large = false;
-  for (;;) {
-    const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
-    bytes.append(buffer, n);
-    if (bytes.size() > kMaxImageFileBytes) {
-      too_large = true;
-      break;
-    }
-    if (n < sizeof buffer) break;
-  }
-  const bool read_error = std::ferror(file) != 0;
-  std::fclose(file);
-  if (too_large) {
-    return failure(name, "file is larger than " + std::to_string(kMaxImageFileBytes / (1024 * 1024)) + " MiB");
-  }
-  if (read_error) return failure(name, "cannot read the file");
+  FileReadResult read = read_regular_file(path, kMaxImageFileBytes);
+  if (!read.bytes) return failure(name, read.error);
+  const std::string& bytes = *read.bytes;
   if (!looks_like_png(bytes)) return parse_image_xml(bytes, name);
 
   const PngText text = read_png_text(bytes);

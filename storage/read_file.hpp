@@ -1,0 +1,22 @@
+#pragma once
+// The one way the project reads a whole file named by a user or by another file. Before reading
+// anything it refuses what is not a regular file (a FIFO, which would block; a device such as
+// /dev/zero, which never ends; a directory) and anything larger than `max_bytes`, so a path can
+// never make a reader hang or allocate without bound. The open never blocks (O_NONBLOCK).
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace vimg {
+
+struct FileReadResult {
+  std::optional<std::string> bytes;  // set on success
+  // On failure, the problem without the path, e.g. "is not a regular file (a FIFO)" or
+  // "is larger than 64 MiB (limit 67108864 bytes)"; the caller prefixes the file name.
+  std::string error;
+};
+
+FileReadResult read_regular_file(const std::filesystem::path& path, std::size_t max_bytes);
+
+}  // namespace vimg
