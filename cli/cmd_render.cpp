@@ -1,4 +1,5 @@
 // `vimg render IMAGE --gesture G.csv --out OUT.(wav|csv) [--rate HZ]` (spec section 4).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "player/offline_render.hpp"
 #include "player/scene.hpp"
 #include "storage/image_io.hpp"
+#include "storage/limits.hpp"
 
 namespace vimg::cli {
 
@@ -56,6 +58,13 @@ int run_render(const RenderArgs& a) {
   const GestureParseResult gesture = load_gesture_file(a.gesture);
   for (const std::string& e : gesture.errors) std::fprintf(stderr, "%s\n", e.c_str());
   if (!gesture.ok()) return kExitFailure;
+  // The output starts at time 0 (or at the gesture, if it starts earlier): bound what that costs.
+  const double span_s = std::max(0.0, gesture.gesture->end_time_s()) - std::min(0.0, gesture.gesture->start_time_s());
+  if (span_s > kMaxGestureDurationS) {
+    std::fprintf(stderr, "%s: error: the render would last %.0f s from time 0 (limit %.0f s); shift the times to start near 0\n",
+                 a.gesture.c_str(), span_s, kMaxGestureDurationS);
+    return kExitFailure;
+  }
 
   ActuatorProfile profile;  // the ideal actuator: resonance 175 Hz as the DOT carrier
   if (!a.actuator.empty()) {

@@ -4,10 +4,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <system_error>
+
+#include "storage/limits.hpp"
+#include "storage/read_file.hpp"
 
 namespace vimg {
 
@@ -114,6 +115,9 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
   Gesture gesture;
   bool header_seen = false;
   int line_no = 0;
+  std::size_t rows = 0;
+  bool have_time = false;
+  double min_time_s = 0.0, max_time_s = 0.0;  // over every row so far: the gesture's span
   std::size_t pos = 0;
   while (pos < text.size()) {
     std::size_t end = text.find('\n', pos);
@@ -134,6 +138,10 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
       header_seen = true;
       continue;
     }
+    if (++rows > kMaxGestureRows) {
+      error(line_no, "more than " + std::to_string(kMaxGestureRows) + " rows (limit " + std::to_string(kMaxGestureRows) + ")");
+      return result;
+    }
     if (f.size() != 6) {
       error(line_no, "expected 6 fields (time_s,finger,x_mm,y_mm,pressure,phase), found " +
                          std::to_string(f.size()));
@@ -145,6 +153,10 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
     if (!parse_number(f[0], p.time_s)) {
       error(line_no, "time_s " + quoted(f[0]) + " is not a finite number");
       ok = false;
+    } else if (std::fabs(p.time_s) > kMaxGestureTimeS) {
+      error(line_no, "time_s " + quoted(f[0]) + " is beyond " + format_number(kMaxGestureTimeS) + " s (limit " +
+                         format_number(kMaxGestureTimeS) + ")");
+      ok = false;
     }
     if (!parse_finger(f[1], finger) || finger < 0 || finger > kMaxGestureFinger) {
       error(line_no, "finger " + quoted(f[1]) + " is not an integer in 0.." +
@@ -154,9 +166,17 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
     if (!parse_number(f[2], p.x_mm)) {
       error(line_no, "x_mm " + quoted(f[2]) + " is not a finite number");
       ok = false;
+    } else if (std::fabs(p.x_mm) > kMaxGestureCoordinateMm) {
+      error(line_no, "x_mm " + quoted(f[2]) + " is beyond " + format_number(kMaxGestureCoordinateMm) + " mm (limit " +
+                         format_number(kMaxGestureCoordinateMm) + ")");
+      ok = false;
     }
     if (!parse_number(f[3], p.y_mm)) {
       error(line_no, "y_mm " + quoted(f[3]) + " is not a finite number");
+      ok = false;
+    } else if (std::fabs(p.y_mm) > kMaxGestureCoordinateMm) {
+      error(line_no, "y_mm " + quoted(f[3]) + " is beyond " + format_number(kMaxGestureCoordinateMm) + " mm (limit " +
+                         format_number(kMaxGestureCoordinateMm) + ")");
       ok = false;
     }
     if (f[4].empty()) {
@@ -174,6 +194,14 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
       ok = false;
     }
     if (!ok) continue;
+    min_time_s = have_time ? std::min(min_time_s, p.time_s) : p.time_s;
+    max_time_s = have_time ? std::max(max_time_s, p.time_s) : p.time_s;
+    have_time = true;
+    if (max_time_s - min_time_s > kMaxGestureDurationS) {
+      error(line_no, "the gesture lasts more than " + format_number(kMaxGestureDurationS) + " s (limit " +
+                         format_number(kMaxGestureDurationS) + ")");
+      return result;
+    }
 
     FingerState& st = fingers[finger];
     if (st.has_time && p.time_s < st.last_time_s) {
@@ -214,15 +242,13 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
 }
 
 GestureParseResult load_gesture_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  FileReadResult read = read_regular_file(path, kMaxCsvFileBytes);
+  if (!read.bytes) {
     GestureParseResult r;
-    r.errors.push_back(path.string() + ": error: cannot open the gesture file");
+    r.errors.push_back(path.string() + ": error: " + read.error);
     return r;
   }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_gesture_csv(ss.str(), path.string());
+  return parse_gesture_csv(*read.bytes, path.string());
 }
 
 std::string write_gesture_csv(const Gesture& gesture) {

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "player/gesture.hpp"
+#include "storage/limits.hpp"
 
 namespace vimg {
 namespace {
@@ -163,6 +164,42 @@ TEST(GestureParse, MutatedFilesGiveLocatedErrorsOrValidGestures) {
       for (const auto& e : r.errors) ASSERT_TRUE(located(e)) << e;
     }
   }
+}
+
+TEST(GestureParse, HugeTimesCoordinatesAndDurationsAreRefusedWithTheirLimit) {
+  const std::string header = "time_s,finger,x_mm,y_mm,pressure,phase\n";
+  const auto first_error = [&](const std::string& rows) {
+    const GestureParseResult r = parse_gesture_csv(header + rows, "g.csv");
+    EXPECT_FALSE(r.ok()) << rows;
+    return r.errors.empty() ? std::string() : r.errors.front();
+  };
+  EXPECT_EQ(first_error("1e6,0,1,1,,down\n"), "g.csv:2: error: time_s '1e6' is beyond 86400 s (limit 86400)");
+  EXPECT_EQ(first_error("0,0,1,1,,down\n1e300,0,2,2,,up\n"), "g.csv:3: error: time_s '1e300' is beyond 86400 s (limit 86400)");
+  EXPECT_EQ(first_error("0,0,1e9,1,,down\n"), "g.csv:2: error: x_mm '1e9' is beyond 10000 mm (limit 10000)");
+  EXPECT_EQ(first_error("0,0,1,-2e4,,down\n"), "g.csv:2: error: y_mm '-2e4' is beyond 10000 mm (limit 10000)");
+  // A span over ten minutes, also across fingers whose times decrease.
+  EXPECT_EQ(first_error("0,0,1,1,,down\n700,0,2,2,,up\n"), "g.csv:3: error: the gesture lasts more than 600 s (limit 600)");
+  EXPECT_EQ(first_error("800,0,1,1,,down\n100,1,2,2,,down\n"), "g.csv:3: error: the gesture lasts more than 600 s (limit 600)");
+  // Within the limits it is fine.
+  EXPECT_TRUE(parse_gesture_csv(header + "0,0,1,1,,down\n600,0,2,2,,up\n", "g.csv").ok());
+}
+
+TEST(GestureParse, MoreRowsThanTheLimitStopAtTheFirstRowOver) {
+  std::string text = "time_s,finger,x_mm,y_mm,pressure,phase\n0,0,1,1,,down\n";
+  text.reserve(30 * kMaxGestureRows);
+  for (std::size_t i = 1; i < kMaxGestureRows; ++i) text += "1,0,1,1,,move\n";
+  EXPECT_TRUE(parse_gesture_csv(text, "g.csv").ok());
+  text += "1,0,1,1,,move\n";
+  const GestureParseResult r = parse_gesture_csv(text, "g.csv");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.errors.front(), "g.csv:" + std::to_string(kMaxGestureRows + 2) + ": error: more than " +
+                                  std::to_string(kMaxGestureRows) + " rows (limit " + std::to_string(kMaxGestureRows) + ")");
+}
+
+TEST(GestureParse, DevicesAndFifosAreRefusedWithoutReading) {
+  const GestureParseResult zero = load_gesture_file("/dev/zero");
+  ASSERT_FALSE(zero.ok());
+  EXPECT_EQ(zero.errors.front(), "/dev/zero: error: is not a regular file (a character device)");
 }
 
 TEST(GestureParse, MissingFileIsAnErrorNamingIt) {

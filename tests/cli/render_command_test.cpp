@@ -1,0 +1,80 @@
+// `vimg render` with hostile gestures: bounded time, bounded output, clear messages, no output.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace vimg {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderRun {
+  int exit_code = -1;
+  std::string out;
+};
+
+class RenderCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("vimg_render_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  RenderRun render(const std::string& gesture, const std::string& out = "out.wav") {
+    const std::string cmd = "cd '" + dir_.string() + "' && timeout 20 '" VIMG_BINARY_DIR "/cli/vimg' render '" VIMG_SOURCE_DIR
+                            "/assets/examples/smiley.vimg' --gesture '" + gesture + "' --out " + out + " 2>&1";
+    RenderRun run;
+    FILE* pipe = ::popen(cmd.c_str(), "r");
+    char buffer[4096];
+    std::size_t n = 0;
+    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
+    const int status = ::pclose(pipe);
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return run;
+  }
+
+  std::string write_gesture(const std::string& rows) {
+    const fs::path path = dir_ / "g.csv";
+    std::ofstream(path) << "time_s,finger,x_mm,y_mm,pressure,phase\n" << rows;
+    return path.string();
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(RenderCommand, AGestureFarFromTimeZeroIsRefusedBeforeRendering) {
+  const RenderRun r = render(write_gesture("500,0,10,10,,down\n700,0,60,60,,up\n"));
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("g.csv: error: the render would last 700 s from time 0 (limit 600 s)"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir_ / "out.wav"));
+}
+
+TEST_F(RenderCommand, HugeTimesAreRefusedWithTheirLineAndLimit) {
+  const RenderRun r = render(write_gesture("0,0,10,10,,down\n1e300,0,60,60,,up\n"));
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("g.csv:3: error: time_s '1e300' is beyond 86400 s (limit 86400)"), std::string::npos) << r.out;
+}
+
+TEST_F(RenderCommand, ADeviceAsTheGestureIsRefusedWithoutReadingIt) {
+  const RenderRun r = render("/dev/zero");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("/dev/zero: error: is not a regular file (a character device)"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir_ / "out.wav"));
+}
+
+TEST_F(RenderCommand, AnOrdinaryGestureStillRenders) {
+  const RenderRun r = render(write_gesture("0,0,10,10,,down\n0.5,0,60,60,,up\n"));
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_GT(fs::file_size(dir_ / "out.wav"), 44u);
+}
+
+}  // namespace
+}  // namespace vimg
