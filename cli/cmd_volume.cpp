@@ -1,16 +1,16 @@
 // `vimg volume make-study --seed N --out DIR` and `vimg volume probe SCENE --path P.csv --out F.csv`
 // (docs/volume.md).
 #include <cstdio>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "cli/command.hpp"
 #include "player/haptic/probe_render.hpp"
 #include "primitives/volume/study_set.hpp"
 #include "storage/atomic_file.hpp"
+#include "storage/limits.hpp"
 #include "storage/number_text.hpp"
+#include "storage/read_file.hpp"
 #include "storage/volume/study_writer.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
@@ -36,14 +36,12 @@ int probe(const std::string& scene_path, const std::string& path_file, const std
   VolumeSceneLoadResult loaded = load_volume_scene_file(scene_path);
   print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) return kExitFailure;
-  std::ifstream in(path_file, std::ios::binary);
-  if (!in) {
-    std::fprintf(stderr, "%s: error: cannot open file\n", path_file.c_str());
+  FileReadResult text = read_regular_file(path_file, kMaxCsvFileBytes);
+  if (!text.bytes) {
+    std::fprintf(stderr, "%s: error: %s\n", path_file.c_str(), text.error.c_str());
     return kExitFailure;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  const ProbePathParseResult path = parse_probe_path_csv(text.str(), path_file);
+  const ProbePathParseResult path = parse_probe_path_csv(*text.bytes, path_file);
   print_diagnostics(path.diagnostics);
   if (!path.path) return kExitFailure;
   auto scene = build_haptic_scene(*loaded.loaded);
