@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <stdexcept>
 
@@ -13,6 +14,18 @@ namespace vimg {
 
 using namespace bos1901;
 
+namespace {
+
+std::array<std::uint8_t, 2> bytes_of(std::uint16_t word) {
+  return {static_cast<std::uint8_t>(word >> 8), static_cast<std::uint8_t>(word & 0xFF)};
+}
+
+std::uint16_t word_of(const std::array<std::uint8_t, 2>& bytes) {
+  return static_cast<std::uint16_t>((bytes[0] << 8) | bytes[1]);
+}
+
+}  // namespace
+
 Bos1901Driver::Bos1901Driver(SpiBus& bus, Clock& clock, const ActuatorProfile& profile, Bos1901Options options)
     : bus_(bus), clock_(clock), options_(options) {
   if (profile.rated_voltage_V > 0.0 && options_.full_scale_V > 0.0) {
@@ -20,31 +33,80 @@ Bos1901Driver::Bos1901Driver(SpiBus& bus, Clock& clock, const ActuatorProfile& p
   }
 }
 
-Bos1901Driver::~Bos1901Driver() {
-  try {
-    close();
-  } catch (const DeviceError&) {
-    // Nothing more can be done; the chip's output stage is left as the last transfer set it.
+Bos1901Driver::~Bos1901Driver() { close(); }
+
+template <typename Attempt>
+int Bos1901Driver::retry(Attempt&& attempt) {
+  std::int64_t backoff_us = options_.first_backoff_us;
+  for (int tries = 0;; ++tries) {
+    const int error = attempt();
+    if (error == 0 || !transient_error(error) || tries >= options_.max_retries) {
+      return error;
+    }
+    clock_.sleep_for_us(backoff_us);  // wait on the device, then try again
+    backoff_us *= 2;
   }
 }
 
 std::uint16_t Bos1901Driver::send(std::uint16_t command) {
-  const std::array<std::uint8_t, 2> tx{static_cast<std::uint8_t>(command >> 8),
-                                       static_cast<std::uint8_t>(command & 0xFF)};
+  const auto tx = bytes_of(command);
   std::array<std::uint8_t, 2> rx{};
-  std::int64_t backoff_us = options_.first_backoff_us;
-  for (int attempt = 0;; ++attempt) {
+  const int error = retry([&] {
     try {
       bus_.transfer(tx, rx);
-      return static_cast<std::uint16_t>((rx[0] << 8) | rx[1]);
-    } catch (const DeviceError& error) {
-      if (!error.transient() || attempt >= options_.max_retries) {
-        throw;
-      }
-      clock_.sleep_for_us(backoff_us);
-      backoff_us *= 2;
+      return 0;
+    } catch (const DeviceError& failure) {
+      return failure.error_number() != 0 ? failure.error_number() : EIO;
     }
+  });
+  if (error != 0) {
+    throw DeviceError(bus_.path(), "BOS1901: SPI word " + std::to_string(command), error);
   }
+  return word_of(rx);
+}
+
+bool Bos1901Driver::exchange(std::uint16_t command, std::uint16_t& sdo) noexcept {
+  if (gone_) return false;
+  const auto tx = bytes_of(command);
+  std::array<std::uint8_t, 2> rx{};
+  if (!account(retry([&] { return bus_.try_transfer(tx, rx); }))) return false;
+  sdo = word_of(rx);
+  return true;
+}
+
+bool Bos1901Driver::account(int error) noexcept {
+  if (error == 0) {
+    consecutive_failures_ = 0;
+    transfer_failure_reported_ = false;
+    return true;
+  }
+  ++consecutive_failures_;
+  if (device_gone_error(error) || consecutive_failures_ >= options_.failures_until_gone) {
+    gone_ = true;
+    faults_.push({FaultKind::device_gone, error, clock_.now_us()});
+    link_.take_down();  // after the push and the last transfer: the service owns the device now
+  } else if (!transfer_failure_reported_) {
+    transfer_failure_reported_ = true;
+    faults_.push({FaultKind::transfer_failed, error, clock_.now_us()});
+  }
+  return false;
+}
+
+void Bos1901Driver::start_stream() {
+  send(word(kConfig, kConfigReset));
+  config_ = static_cast<std::uint16_t>((kIcStatus << kConfigBroadcastShift) | static_cast<unsigned>(play_code_));
+  send(word(kConfig, config_));
+  const std::uint16_t status = send(word(kConfig, config_));  // SDO now carries IC_STATUS
+  known_space_ = status & kStatusFifoSpaceMask;
+  if ((status & kStatusEmpty) != 0 && known_space_ == 0) {
+    known_space_ = kFifoDepth;  // FIFO_SPACE is 6 bits: an empty 64-entry FIFO may read 0
+  }
+  streaming_ = false;
+  restart_from_zero_ = false;
+  const std::uint16_t before_zero = send(word(kReference, 0));  // start at 0 V
+  known_space_ = ((before_zero & kStatusEmpty) != 0 ? kFifoDepth : (before_zero & kStatusFifoSpaceMask)) - 1;
+  config_ = static_cast<std::uint16_t>(config_ | kConfigOutputEnable);
+  send(word(kConfig, config_));
 }
 
 void Bos1901Driver::open(double sample_rate_hz) {
@@ -53,25 +115,32 @@ void Bos1901Driver::open(double sample_rate_hz) {
     throw std::invalid_argument(bus_.path() + ": the BOS1901 plays 8, 16, 32, 64, 128, 256, 512 or 1024 kHz, not " +
                                 std::to_string(sample_rate_hz) + " Hz");
   }
+  play_code_ = play;
   sample_period_us_ = std::llround(1e6 / sample_rate_hz);
-  send(word(kConfig, kConfigReset));
-  config_ = static_cast<std::uint16_t>((kIcStatus << kConfigBroadcastShift) | static_cast<unsigned>(play));
-  send(word(kConfig, config_));
-  const std::uint16_t status = send(word(kConfig, config_));  // SDO now carries IC_STATUS
-  known_space_ = status & kStatusFifoSpaceMask;
-  if ((status & kStatusEmpty) != 0 && known_space_ == 0) {
-    known_space_ = kFifoDepth;  // FIFO_SPACE is 6 bits: an empty 64-entry FIFO may read 0
+  if (!link_.up()) {
+    bus_.reopen();
   }
+  start_stream();
+  link_.put_up();
+  gone_ = false;
   stopped_ = false;
-  streaming_ = false;
-  restart_from_zero_ = false;
-  push_sample(0);  // start at 0 V
-  config_ = static_cast<std::uint16_t>(config_ | kConfigOutputEnable);
-  send(word(kConfig, config_));
+  consecutive_failures_ = 0;
+  transfer_failure_reported_ = false;
   playing_ = true;
 }
 
-void Bos1901Driver::handle_status(std::uint16_t status) {
+void Bos1901Driver::reconnect() {
+  // Service thread, link down: the render thread leaves the bus and the device state alone.
+  bus_.reopen();
+  if (playing_) {
+    start_stream();
+  } else {
+    send(word(kConfig, kConfigReset));  // output stage off
+  }
+  link_.put_up();  // after the last transfer: the render thread resumes
+}
+
+void Bos1901Driver::handle_status(std::uint16_t status) noexcept {
   if ((status & kStatusOverTemp) != 0) {
     stop(FaultKind::over_temperature);
     return;
@@ -87,48 +156,64 @@ void Bos1901Driver::handle_status(std::uint16_t status) {
   }
 }
 
-void Bos1901Driver::push_sample(std::uint16_t code) {
+bool Bos1901Driver::push_sample(std::uint16_t code) noexcept {
+  std::uint16_t status = 0;
   while (known_space_ <= 0) {
     clock_.sleep_for_us(sample_period_us_);  // let the chip play one sample out
-    handle_status(send(word(kConfig, config_)));
-    if (stopped_) return;
+    if (!exchange(word(kConfig, config_), status)) return false;
+    handle_status(status);
+    if (stopped_) return false;
   }
-  const std::uint16_t status = send(word(kReference, code));
-  const bool was_empty = (status & kStatusEmpty) != 0;
+  if (!exchange(word(kReference, code), status)) return false;
   if ((status & kStatusOverTemp) != 0) {
     stop(FaultKind::over_temperature);
-    return;
+    return false;
   }
+  const bool was_empty = (status & kStatusEmpty) != 0;
   known_space_ = (was_empty ? kFifoDepth : (status & kStatusFifoSpaceMask)) - 1;
+  return true;
 }
 
 void Bos1901Driver::write(std::span<const float> drive, double) {
   if (!playing_ || stopped_) {
     return;
   }
+  if (gone_) {
+    if (!link_.up()) {
+      return;  // the service is reconnecting: output is skipped, the bus left alone
+    }
+    // reconnect() restarted the stream from 0 V.
+    gone_ = false;
+    consecutive_failures_ = 0;
+    transfer_failure_reported_ = false;
+  }
   if (rest_requested()) {
     stop(FaultKind::rest_requested);
     return;
   }
   // Learn the FIFO state once per block: an underrun since the last block shows here.
-  handle_status(send(word(kConfig, config_)));
+  std::uint16_t status = 0;
+  if (exchange(word(kConfig, config_), status)) {
+    handle_status(status);
+  }
   for (const float sample : drive) {
-    if (stopped_) return;
+    if (stopped_ || gone_) return;
     if (!streaming_) {
       if (restart_from_zero_) {
-        push_sample(0);  // restart from 0 V after running dry
+        if (!push_sample(0)) continue;  // restart from 0 V after running dry
         restart_from_zero_ = false;
       }
       streaming_ = true;
     }
-    push_sample(sample_code(static_cast<double>(sample) * gain_));
+    push_sample(sample_code(static_cast<double>(sample) * gain_));  // a failed word is a lost sample
   }
 }
 
-void Bos1901Driver::stop(FaultKind why) {
+void Bos1901Driver::stop(FaultKind why) noexcept {
   stopped_ = true;
   config_ = static_cast<std::uint16_t>(config_ & ~kConfigOutputEnable);
-  send(word(kConfig, config_));  // output stage off: the actuator goes to 0 V
+  std::uint16_t status = 0;
+  exchange(word(kConfig, config_), status);  // output stage off: the actuator goes to 0 V
   faults_.push({why, 0, clock_.now_us()});
 }
 
@@ -137,16 +222,20 @@ void Bos1901Driver::close() {
     return;
   }
   playing_ = false;
-  if (!stopped_) {
-    push_sample(0);  // end at 0 V
+  if (!link_.up()) {
+    return;  // gone: nothing reaches the chip
+  }
+  gone_ = false;  // the service may have reconnected it since the last write()
+  std::uint16_t status = 0;
+  if (!stopped_ && push_sample(0)) {  // end at 0 V
     for (int poll = 0; poll <= kFifoDepth + 1; ++poll) {
-      if ((send(word(kConfig, config_)) & kStatusEmpty) != 0) break;
+      if (!exchange(word(kConfig, config_), status) || (status & kStatusEmpty) != 0) break;
       clock_.sleep_for_us(sample_period_us_);
     }
     clock_.sleep_for_us(sample_period_us_);  // the last sample reaches the output
   }
   config_ = static_cast<std::uint16_t>(config_ & ~kConfigOutputEnable);
-  send(word(kConfig, config_));
+  exchange(word(kConfig, config_), status);
 }
 
 }  // namespace vimg

@@ -1,6 +1,7 @@
 #include "hal/drv2605l_driver.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <stdexcept>
 
@@ -16,6 +17,17 @@ namespace {
 std::string hex_byte(unsigned value) {
   static constexpr char kDigits[] = "0123456789ABCDEF";
   return std::string("0x") + kDigits[(value >> 4) & 0xF] + kDigits[value & 0xF];
+}
+
+// A throwing transfer as an errno value, for the retry loop of initialization and calibration.
+template <typename Transfer>
+int error_of(Transfer&& transfer) {
+  try {
+    transfer();
+    return 0;
+  } catch (const DeviceError& error) {
+    return error.error_number() != 0 ? error.error_number() : EIO;
+  }
 }
 }  // namespace
 
@@ -46,58 +58,57 @@ Drv2605lDriver::~Drv2605lDriver() {
   }
 }
 
-template <typename Transfer>
-bool Drv2605lDriver::with_retries(Transfer&& transfer) {
+template <typename Attempt>
+int Drv2605lDriver::retry(Attempt&& attempt) {
   std::int64_t backoff_us = options_.first_backoff_us;
-  for (int attempt = 0;; ++attempt) {
-    try {
-      transfer();
-      consecutive_failures_ = 0;
-      transfer_failure_reported_ = false;
-      return true;
-    } catch (const DeviceError& error) {
-      last_errno_ = error.error_number();
-      if (error.device_gone()) {
-        consecutive_failures_ = std::max(consecutive_failures_, options_.failures_until_gone - 1);
-        return false;
-      }
-      if (!error.transient() || attempt >= options_.max_retries) {
-        return false;
-      }
-      clock_.sleep_for_us(backoff_us);
-      backoff_us *= 2;
+  for (int tries = 0;; ++tries) {
+    const int error = attempt();
+    if (error == 0 || !transient_error(error) || tries >= options_.max_retries) {
+      return error;
     }
+    clock_.sleep_for_us(backoff_us);  // wait on the device, then try again
+    backoff_us *= 2;
   }
 }
 
 void Drv2605lDriver::write_reg(std::uint8_t reg, std::uint8_t value) {
-  if (!with_retries([&] { write_register(bus_, address_, reg, value); })) {
-    throw DeviceError(bus_.path(), "DRV2605L at " + hex_byte(address_) + ": write register " + hex_byte(reg),
-                      last_errno_);
+  if (const int error = retry([&] { return error_of([&] { write_register(bus_, address_, reg, value); }); })) {
+    throw DeviceError(bus_.path(), "DRV2605L at " + hex_byte(address_) + ": write register " + hex_byte(reg), error);
   }
 }
 
 std::uint8_t Drv2605lDriver::read_reg(std::uint8_t reg) {
   std::uint8_t value = 0;
-  if (!with_retries([&] { value = read_register(bus_, address_, reg); })) {
-    throw DeviceError(bus_.path(), "DRV2605L at " + hex_byte(address_) + ": read register " + hex_byte(reg),
-                      last_errno_);
+  if (const int error = retry([&] { return error_of([&] { value = read_register(bus_, address_, reg); }); })) {
+    throw DeviceError(bus_.path(), "DRV2605L at " + hex_byte(address_) + ": read register " + hex_byte(reg), error);
   }
   return value;
 }
 
-bool Drv2605lDriver::try_write_reg(std::uint8_t reg, std::uint8_t value) {
-  if (with_retries([&] { write_register(bus_, address_, reg, value); })) {
+bool Drv2605lDriver::rt_write_reg(std::uint8_t reg, std::uint8_t value) noexcept {
+  if (gone_) return false;
+  return account(retry([&] { return try_write_register(bus_, address_, reg, value); }));
+}
+
+bool Drv2605lDriver::rt_read_reg(std::uint8_t reg, std::uint8_t& value) noexcept {
+  if (gone_) return false;
+  return account(retry([&] { return try_read_register(bus_, address_, reg, value); }));
+}
+
+bool Drv2605lDriver::account(int error) noexcept {
+  if (error == 0) {
+    consecutive_failures_ = 0;
+    transfer_failure_reported_ = false;
     return true;
   }
   ++consecutive_failures_;
-  if (consecutive_failures_ >= options_.failures_until_gone) {
+  if (device_gone_error(error) || consecutive_failures_ >= options_.failures_until_gone) {
     gone_ = true;
-    last_reconnect_us_ = clock_.now_us();
-    faults_.push({FaultKind::device_gone, last_errno_, clock_.now_us()});
+    faults_.push({FaultKind::device_gone, error, clock_.now_us()});
+    link_.take_down();  // after the push and the last transfer: the service owns the device now
   } else if (!transfer_failure_reported_) {
     transfer_failure_reported_ = true;
-    faults_.push({FaultKind::transfer_failed, last_errno_, clock_.now_us()});
+    faults_.push({FaultKind::transfer_failed, error, clock_.now_us()});
   }
   return false;
 }
@@ -207,7 +218,11 @@ void Drv2605lDriver::open(double sample_rate_hz) {
   if (!(sample_rate_hz > 0.0)) {
     throw std::invalid_argument("DRV2605L: sample rate must be above 0 Hz");
   }
-  if (!initialized_ || gone_) {
+  if (!link_.up()) {
+    bus_.reopen();
+    initialize();
+    link_.put_up();
+  } else if (!initialized_) {
     initialize();
   }
   follower_.configure(sample_rate_hz, profile_.resonance_hz, options_.release_time_s);
@@ -216,6 +231,7 @@ void Drv2605lDriver::open(double sample_rate_hz) {
   gone_ = false;
   rest_reported_ = false;
   consecutive_failures_ = 0;
+  transfer_failure_reported_ = false;
   pulse_code_ = 0;
   if (open_loop_) {
     select_loop(false, profile_.resonance_hz);
@@ -257,7 +273,7 @@ void Drv2605lDriver::write(std::span<const float> drive, double block_start_time
       [this](std::int64_t time_us) { update(time_us); });
 }
 
-void Drv2605lDriver::update(std::int64_t time_us) {
+void Drv2605lDriver::update(std::int64_t time_us) noexcept {
   if (stopped_) {
     return;
   }
@@ -265,8 +281,10 @@ void Drv2605lDriver::update(std::int64_t time_us) {
     clock_.sleep_until_us(time_us);
   }
   if (gone_) {
-    try_reconnect(time_us);
-    return;
+    if (!link_.up()) {
+      return;  // the service is reconnecting: output is skipped, the bus left alone
+    }
+    resume(time_us);
   }
   if (time_us - last_status_poll_us_ >= std::llround(options_.status_poll_interval_s * 1e6)) {
     poll_status(time_us);
@@ -292,7 +310,7 @@ void Drv2605lDriver::update(std::int64_t time_us) {
       select_loop(want_open, open_hz);
     } else if (open_loop_) {
       const std::uint8_t period = open_loop_period_code(open_hz);
-      if (period != last_period_code_ && try_write_reg(kOlLraPeriod, period)) {
+      if (period != last_period_code_ && rt_write_reg(kOlLraPeriod, period)) {
         last_period_code_ = period;
       }
     }
@@ -309,12 +327,22 @@ void Drv2605lDriver::update(std::int64_t time_us) {
   } else if (code == 0) {
     pulse_code_ = 0;
   }
-  if (code != last_rtp_code_ && try_write_reg(kRtpInput, code)) {
+  if (code != last_rtp_code_ && rt_write_reg(kRtpInput, code)) {
     last_rtp_code_ = code;
   }
 }
 
-void Drv2605lDriver::select_loop(bool open_loop, double frequency_hz) {
+void Drv2605lDriver::resume(std::int64_t time_us) noexcept {
+  // reconnect() left the chip initialized, in RTP mode at 0.
+  gone_ = false;
+  last_rtp_code_ = 0;
+  pulse_code_ = 0;
+  consecutive_failures_ = 0;
+  transfer_failure_reported_ = false;
+  last_status_poll_us_ = time_us;
+}
+
+void Drv2605lDriver::select_loop(bool open_loop, double frequency_hz) noexcept {
   if (open_loop) {
     const double full_scale = options_.signed_rtp ? 127.0 : 255.0;
     const double ratio = profile_.overdrive_clamp_V > 0.0
@@ -322,34 +350,25 @@ void Drv2605lDriver::select_loop(bool open_loop, double frequency_hz) {
                              : 1.0;
     const auto open_max = static_cast<std::uint8_t>(std::floor(full_scale * ratio));
     if (last_rtp_code_ > open_max) {  // never above the open-loop clamp, not even for one write
-      if (!try_write_reg(kRtpInput, open_max)) return;
+      if (!rt_write_reg(kRtpInput, open_max)) return;
       last_rtp_code_ = open_max;
     }
     const std::uint8_t period = open_loop_period_code(frequency_hz);
-    if (!try_write_reg(kOlLraPeriod, period)) return;
+    if (!rt_write_reg(kOlLraPeriod, period)) return;
     last_period_code_ = period;
   }
   const auto control3 = static_cast<std::uint8_t>(open_loop ? (control3_ | kControl3LraOpenLoop)
                                                              : (control3_ & ~kControl3LraOpenLoop));
-  if (try_write_reg(kControl3, control3)) {
+  if (rt_write_reg(kControl3, control3)) {
     control3_ = control3;
     open_loop_ = open_loop;
   }
 }
 
-void Drv2605lDriver::poll_status(std::int64_t time_us) {
+void Drv2605lDriver::poll_status(std::int64_t time_us) noexcept {
   last_status_poll_us_ = time_us;
   std::uint8_t status = 0;
-  if (!with_retries([&] { status = read_register(bus_, address_, kStatus); })) {
-    ++consecutive_failures_;
-    if (consecutive_failures_ >= options_.failures_until_gone) {
-      gone_ = true;
-      last_reconnect_us_ = time_us;
-      faults_.push({FaultKind::device_gone, last_errno_, time_us});
-    } else if (!transfer_failure_reported_) {
-      transfer_failure_reported_ = true;
-      faults_.push({FaultKind::transfer_failed, last_errno_, time_us});
-    }
+  if (!rt_read_reg(kStatus, status)) {
     return;
   }
   if ((status & kStatusOverCurrent) != 0) {
@@ -359,44 +378,32 @@ void Drv2605lDriver::poll_status(std::int64_t time_us) {
   }
 }
 
-void Drv2605lDriver::stop_output(FaultKind why) {
+void Drv2605lDriver::stop_output(FaultKind why) noexcept {
   enter_rest();
   stopped_ = true;
   faults_.push({why, 0, clock_.now_us()});
 }
 
-void Drv2605lDriver::try_reconnect(std::int64_t time_us) {
-  if (time_us - last_reconnect_us_ < std::llround(options_.reconnect_interval_s * 1e6)) {
-    return;
-  }
-  last_reconnect_us_ = time_us;
-  try {
-    bus_.reopen();
-    initialize();
+void Drv2605lDriver::reconnect() {
+  // Service thread, link down: the render thread leaves the bus and the device state alone.
+  bus_.reopen();
+  initialize();
+  if (playing_) {
     write_reg(kRtpInput, 0);
     write_reg(kMode, kModeRtp);
-  } catch (const DeviceError&) {
-    return;  // still gone; try again later
   }
-  last_rtp_code_ = 0;
-  pulse_code_ = 0;
-  gone_ = false;
-  consecutive_failures_ = 0;
-  transfer_failure_reported_ = false;
-  last_status_poll_us_ = time_us;
-  faults_.push({FaultKind::reconnected, 0, clock_.now_us()});
+  link_.put_up();  // after the last transfer: the render thread resumes (resume())
 }
 
 void Drv2605lDriver::enter_rest() noexcept {
-  if (!initialized_) {
-    return;
+  if (!link_.up() || !initialized_) {
+    return;  // gone: nothing reaches the chip (and the device state is the service's)
   }
-  try {
-    with_retries([&] { write_register(bus_, address_, kRtpInput, 0); });
-    with_retries([&] { write_register(bus_, address_, kMode, kModeStandby); });
-  } catch (...) {
-    // with_retries only lets non-device errors through; nothing else can be done at rest time.
+  if (gone_) {
+    resume(clock_.now_us());  // the service reconnected it since the last update
   }
+  retry([&] { return try_write_register(bus_, address_, kRtpInput, 0); });
+  retry([&] { return try_write_register(bus_, address_, kMode, kModeStandby); });
   last_rtp_code_ = 0;
 }
 

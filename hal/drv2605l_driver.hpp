@@ -22,11 +22,21 @@
 // (signed). In open loop full scale is OD_CLAMP, so the top code is scaled by rated/clamp so that the
 // steady drive never exceeds the rated voltage. No RTP write is ever above max_rtp_code().
 //
-// Faults: NACK/EIO are retried with exponential backoff; a write that still fails is dropped and
-// reported once per episode; persistent failure or ENODEV marks the device gone (reported once),
-// and reconnection (reopen + initialize) is tried every reconnect_interval_s while rendering goes on.
+// Faults (docs/hardware.md, "Faults and reconnection"): on the render thread NACK/EIO are retried
+// with exponential backoff (waiting on the device); a write that still fails is dropped and
+// reported once per episode; ENODEV, or failures_until_gone failed updates in a row, mean the
+// device is gone: the driver posts device_gone, takes its DeviceLink down and skips output. The
+// device service thread reconnects it (reconnect(): reopen + initialize) and puts the link up.
 // STATUS is polled: over-current or over-temperature puts the chip in standby and stops output.
 // rest_requested() (a signal) puts it to rest at the next write.
+//
+// Threads:
+//   - control thread: construction, initialize(), calibrate(), open(), close(), destruction, while
+//     neither the render thread nor the device service uses the driver;
+//   - render thread: write(). It never throws, allocates, locks or reopens; it waits only on the
+//     device (pacing, retry backoff) and uses the bus only while link() is up;
+//   - device service thread: faults() (consumer), device_path(), reconnect() while link() is down;
+//   - any thread: set_loop_hint(), device_gone().
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
@@ -41,6 +51,7 @@
 #include "hal/fault_log.hpp"
 #include "hal/gpio_output.hpp"
 #include "hal/i2c_bus.hpp"
+#include "hal/serviced_device.hpp"
 #include "player/drive_sink.hpp"
 
 namespace vimg {
@@ -54,14 +65,13 @@ struct Drv2605lOptions {
   int max_retries = 3;                 // after the first attempt
   std::int64_t first_backoff_us = 100; // doubles each retry
   int failures_until_gone = 20;        // consecutive failed updates that mean the device is gone
-  double reconnect_interval_s = 0.5;
   bool pace_writes = true;             // wait on the clock until each update's time within a block
   std::filesystem::path calibration_file;  // empty: none stored or restored
 };
 
 enum class LoopHint : std::uint8_t { automatic, closed_loop, open_loop };
 
-class Drv2605lDriver final : public DriveSink {
+class Drv2605lDriver final : public DriveSink, public ServicedDevice {
  public:
   // `enable_pin` may be null (EN tied high). The references must outlive the driver.
   Drv2605lDriver(I2cBus& bus, GpioOutput* enable_pin, Clock& clock, const ActuatorProfile& profile,
@@ -75,27 +85,33 @@ class Drv2605lDriver final : public DriveSink {
   void write(std::span<const float> drive, double block_start_time_s) override;
   void close() override;
 
+  FaultLog& faults() override { return faults_; }
+  const DeviceLink& link() const override { return link_; }
+  const std::string& device_path() const override { return bus_.path(); }
+  void reconnect() override;
+
   void set_loop_hint(LoopHint hint, double frequency_hz = 0.0);
 
   std::uint8_t max_rtp_code() const;  // for the current loop mode
   bool open_loop() const { return open_loop_; }
   bool output_stopped() const { return stopped_; }
-  bool device_gone() const { return gone_; }
-  FaultLog& faults() { return faults_; }
-  const std::string& device_path() const { return bus_.path(); }
+  bool device_gone() const { return !link_.up(); }
   std::optional<std::string> calibration_warning() const { return calibration_warning_; }
 
  private:
-  template <typename Transfer>
-  bool with_retries(Transfer&& transfer);
+  template <typename Attempt>
+  int retry(Attempt&& attempt);                           // 0 or the errno of the last attempt
   void write_reg(std::uint8_t reg, std::uint8_t value);   // throws after retries
   std::uint8_t read_reg(std::uint8_t reg);                // throws after retries
-  bool try_write_reg(std::uint8_t reg, std::uint8_t value);  // real-time path: reports, never throws
-  void update(std::int64_t time_us);
-  void select_loop(bool open_loop, double frequency_hz);
-  void poll_status(std::int64_t time_us);
-  void stop_output(FaultKind why);
-  void try_reconnect(std::int64_t time_us);
+  // Render thread: false when the transfer failed (reported) or the device is gone.
+  bool rt_write_reg(std::uint8_t reg, std::uint8_t value) noexcept;
+  bool rt_read_reg(std::uint8_t reg, std::uint8_t& value) noexcept;
+  bool account(int error) noexcept;
+  void update(std::int64_t time_us) noexcept;
+  void resume(std::int64_t time_us) noexcept;
+  void select_loop(bool open_loop, double frequency_hz) noexcept;
+  void poll_status(std::int64_t time_us) noexcept;
+  void stop_output(FaultKind why) noexcept;
   void enter_rest() noexcept;
   void apply_calibration(const Drv2605lCalibration& calibration);
 
@@ -106,28 +122,31 @@ class Drv2605lDriver final : public DriveSink {
   Drv2605lOptions options_;
   std::uint8_t address_;
   FaultLog faults_;
-  EnvelopeFollower follower_;
+  DeviceLink link_;
+  bool playing_ = false;  // control thread (open, close), read by the render thread
 
+  // Device state: the chip's registers as we left them. Used by whichever thread holds the link.
   bool initialized_ = false;
-  bool playing_ = false;
-  bool stopped_ = false;
-  bool gone_ = false;
   bool open_loop_ = false;
+  std::uint8_t control3_ = 0;
+  std::uint8_t last_period_code_ = 0;
+  std::optional<std::string> calibration_warning_;
+
+  // Render thread only (and the control thread in open()).
+  EnvelopeFollower follower_;
+  UpdateSchedule schedule_;
+  bool gone_ = false;  // the render thread took the link down and has not seen it up again
+  bool stopped_ = false;
   bool transfer_failure_reported_ = false;
   bool rest_reported_ = false;
   int consecutive_failures_ = 0;
-  int last_errno_ = 0;
-  std::uint8_t control3_ = 0;
   std::uint8_t last_rtp_code_ = 0;
-  std::uint8_t last_period_code_ = 0;
   std::uint8_t pulse_code_ = 0;
   std::int64_t pulse_start_us_ = 0;
-  UpdateSchedule schedule_;
   std::int64_t last_status_poll_us_ = 0;
-  std::int64_t last_reconnect_us_ = 0;
+
   std::atomic<LoopHint> hint_{LoopHint::automatic};
   std::atomic<double> hint_frequency_hz_{0.0};
-  std::optional<std::string> calibration_warning_;
 };
 
 }  // namespace vimg

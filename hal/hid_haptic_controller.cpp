@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -57,7 +58,12 @@ void HidHapticController::connect() {
   for (std::size_t i = 0; i < waveforms_.size() && 2 + 2 * i < got_durations; ++i) {
     waveforms_[i].duration_ms = static_cast<std::uint16_t>(durations[1 + 2 * i] | (durations[2 + 2 * i] << 8));
   }
-  gone_ = false;
+}
+
+void HidHapticController::reconnect() {
+  // Service thread, link down: the render thread leaves the device state alone.
+  connect();
+  link_.put_up();  // the render thread resumes (resume())
 }
 
 std::optional<HidWaveform> HidHapticController::find(std::uint16_t usage) const {
@@ -67,24 +73,44 @@ std::optional<HidWaveform> HidHapticController::find(std::uint16_t usage) const 
   return std::nullopt;
 }
 
+template <typename Attempt>
+int HidHapticController::retry(Attempt&& attempt) {
+  std::int64_t backoff_us = options_.first_backoff_us;
+  for (int tries = 0;; ++tries) {
+    const int error = attempt();
+    if (error == 0 || !transient_error(error) || tries >= options_.max_retries) {
+      return error;
+    }
+    clock_.sleep_for_us(backoff_us);  // wait on the device, then try again
+    backoff_us *= 2;
+  }
+}
+
 bool HidHapticController::send_trigger(std::uint8_t ordinal, double intensity, std::uint8_t repeat,
-                                       std::uint16_t period_ms) {
-  if (!device_) return false;
+                                       std::uint16_t period_ms) noexcept {
+  if (gone_ || !device_) return false;
   const std::array<std::uint8_t, kTriggerReportSize> report{
       kTriggerReport, ordinal, static_cast<std::uint8_t>(std::lround(std::clamp(intensity, 0.0, 1.0) * 100.0)),
       repeat, static_cast<std::uint8_t>(period_ms & 0xFF), static_cast<std::uint8_t>(period_ms >> 8)};
-  try {
-    device_->write(report);
+  return account(retry([&] { return device_->try_write(report); }));
+}
+
+bool HidHapticController::account(int error) noexcept {
+  if (error == 0) {
+    consecutive_failures_ = 0;
+    transfer_failure_reported_ = false;
     return true;
-  } catch (const DeviceError& error) {
-    if (!gone_) {
-      gone_ = true;
-      last_reconnect_us_ = clock_.now_us();
-      faults_.push({FaultKind::device_gone, error.error_number(), clock_.now_us()});
-    }
-    device_.reset();
-    return false;
   }
+  ++consecutive_failures_;
+  if (device_gone_error(error) || consecutive_failures_ >= options_.failures_until_gone) {
+    gone_ = true;
+    faults_.push({FaultKind::device_gone, error, clock_.now_us()});
+    link_.take_down();  // after the push and the last write: the service owns the device now
+  } else if (!transfer_failure_reported_) {
+    transfer_failure_reported_ = true;
+    faults_.push({FaultKind::transfer_failed, error, clock_.now_us()});
+  }
+  return false;
 }
 
 void HidHapticController::trigger(std::uint16_t waveform_usage, double intensity, std::uint8_t repeat_count,
@@ -99,7 +125,13 @@ void HidHapticController::trigger(std::uint16_t waveform_usage, double intensity
 void HidHapticController::stop_waveforms() { send_trigger(kOrdinalStop, 0.0, 0, 0); }
 
 void HidHapticController::open(double sample_rate_hz) {
-  if (!device_) connect();
+  if (!device_ || !link_.up()) {
+    connect();
+    link_.put_up();
+  }
+  gone_ = false;
+  consecutive_failures_ = 0;
+  transfer_failure_reported_ = false;
   follower_.configure(sample_rate_hz, options_.resonance_hz, 0.003);
   schedule_.start(sample_rate_hz, 1000.0);  // 1 kHz decisions
   active_ = buzzing_ = onset_pending_ = false;
@@ -117,19 +149,20 @@ void HidHapticController::write(std::span<const float> drive, double block_start
       [this](std::int64_t time_us) { update(time_us); });
 }
 
-void HidHapticController::update(std::int64_t time_us) {
+void HidHapticController::resume() noexcept {
+  // reconnect() found and opened the device again; nothing plays on it yet.
+  gone_ = false;
+  active_ = buzzing_ = onset_pending_ = false;
+  consecutive_failures_ = 0;
+  transfer_failure_reported_ = false;
+}
+
+void HidHapticController::update(std::int64_t time_us) noexcept {
   if (gone_) {
-    if (time_us - last_reconnect_us_ >= 500'000) {
-      last_reconnect_us_ = time_us;
-      try {
-        connect();
-        faults_.push({FaultKind::reconnected, 0, time_us});
-      } catch (const std::exception&) {
-        return;  // still gone
-      }
-    } else {
-      return;
+    if (!link_.up()) {
+      return;  // the service is reconnecting: nothing is sent
     }
+    resume();
   }
   const double level = follower_.envelope();
   const auto click = find(kWaveformClick);
@@ -177,8 +210,9 @@ void HidHapticController::update(std::int64_t time_us) {
 void HidHapticController::close() {
   if (!playing_) return;
   playing_ = false;
+  if (!link_.up()) return;  // gone: nothing reaches the device
+  resume();                 // the service may have reconnected it since the last write()
   send_trigger(kOrdinalStop, 0.0, 0, 0);
-  active_ = buzzing_ = false;
 }
 
 }  // namespace vimg

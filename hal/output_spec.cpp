@@ -5,11 +5,12 @@
 #include <stdexcept>
 
 #include "hal/bos1901_driver.hpp"
-#include "realtime/clock.hpp"
+#include "hal/device_service.hpp"
 #include "hal/drv2605l_driver.hpp"
 #include "hal/hid_haptic_controller.hpp"
 #include "hal/sdl_audio_sink.hpp"
 #include "player/drive_sinks.hpp"
+#include "realtime/clock.hpp"
 
 namespace vimg {
 
@@ -134,11 +135,30 @@ std::string Output::calibrate() {
 
 namespace {
 
-std::vector<std::string> drain(FaultLog& log, const std::string& path) {
-  std::vector<std::string> messages;
-  while (auto event = log.pop()) messages.push_back(describe(*event, path));
-  return messages;
-}
+// A driver's sink with its device service running while it plays: started after open(), stopped
+// before close(), so that the service never reconnects while the control thread opens or closes
+// the device.
+class ServicedSink final : public DriveSink {
+ public:
+  ServicedSink(DriveSink& sink, ServicedDevice& device, DeviceService& service) : sink_(sink), service_(service) {
+    service_.add(device);
+  }
+  void open(double sample_rate_hz) override {
+    sink_.open(sample_rate_hz);
+    service_.start();
+  }
+  void write(std::span<const float> drive, double block_start_time_s) override {
+    sink_.write(drive, block_start_time_s);
+  }
+  void close() override {
+    service_.stop();
+    sink_.close();
+  }
+
+ private:
+  DriveSink& sink_;
+  DeviceService& service_;
+};
 
 class AudioOut final : public Output {
  public:
@@ -189,17 +209,19 @@ class Drv2605lOut final : public Output {
     driver_ = std::make_unique<Drv2605lDriver>(bus_, pin_.get(), clock_, profile, options);
     driver_->initialize();
     startup_warning_ = driver_->calibration_warning();  // read here: later the render thread owns the driver
+    sink_ = std::make_unique<ServicedSink>(*driver_, *driver_, service_);
   }
-  DriveSink& sink() override { return *driver_; }
+  DriveSink& sink() override { return *sink_; }
   std::string description() const override { return "drv2605l " + bus_.path(); }
   std::vector<std::string> take_messages() override {
-    auto messages = drain(driver_->faults(), bus_.path());
+    auto messages = service_.take_messages();
     if (startup_warning_) {
       messages.push_back(*startup_warning_);
       startup_warning_.reset();
     }
     return messages;
   }
+  bool device_gone() const override { return driver_->device_gone(); }
   std::string calibrate() override {
     const Drv2605lCalibration result = driver_->calibrate();
     char text[200];
@@ -216,22 +238,29 @@ class Drv2605lOut final : public Output {
   SystemClock clock_;
   std::unique_ptr<GpiodOutput> pin_;
   std::unique_ptr<Drv2605lDriver> driver_;
+  DeviceService service_;  // declared after the driver: stopped before the driver closes
+  std::unique_ptr<ServicedSink> sink_;
   std::optional<std::string> startup_warning_;
 };
 
 class SpiOut final : public Output {
  public:
   SpiOut(const SpiOutput& spec, const ActuatorProfile& profile)
-      : bus_(spec.device, SpiSettings{spec.mode, spec.speed_hz, 8}), driver_(bus_, clock_, profile) {}
-  DriveSink& sink() override { return driver_; }
+      : bus_(spec.device, SpiSettings{spec.mode, spec.speed_hz, 8}),
+        driver_(bus_, clock_, profile),
+        sink_(driver_, driver_, service_) {}
+  DriveSink& sink() override { return sink_; }
   std::string description() const override { return "bos1901 " + bus_.path(); }
-  std::vector<std::string> take_messages() override { return drain(driver_.faults(), bus_.path()); }
+  std::vector<std::string> take_messages() override { return service_.take_messages(); }
   std::uint64_t underruns() const override { return driver_.underruns(); }
+  bool device_gone() const override { return driver_.device_gone(); }
 
  private:
   LinuxSpiBus bus_;
   SystemClock clock_;
   Bos1901Driver driver_;
+  DeviceService service_;  // declared after the driver: stopped before the driver closes
+  ServicedSink sink_;
 };
 
 class HidOut final : public Output {
@@ -241,17 +270,21 @@ class HidOut final : public Output {
     options.resonance_hz = profile.resonance_hz;
     controller_ = std::make_unique<HidHapticController>(host_, spec.vendor_id, spec.product_id, clock_, options);
     controller_->connect();
+    description_ = "hid " + controller_->device_path();  // the path may change when it reconnects
+    sink_ = std::make_unique<ServicedSink>(*controller_, *controller_, service_);
   }
-  DriveSink& sink() override { return *controller_; }
-  std::string description() const override { return "hid " + controller_->device_path(); }
-  std::vector<std::string> take_messages() override {
-    return drain(controller_->faults(), controller_->device_path());
-  }
+  DriveSink& sink() override { return *sink_; }
+  std::string description() const override { return description_; }
+  std::vector<std::string> take_messages() override { return service_.take_messages(); }
+  bool device_gone() const override { return controller_->device_gone(); }
 
  private:
   HidapiHost host_;
   SystemClock clock_;
   std::unique_ptr<HidHapticController> controller_;
+  DeviceService service_;  // declared after the controller: stopped before it closes
+  std::unique_ptr<ServicedSink> sink_;
+  std::string description_;
 };
 
 }  // namespace

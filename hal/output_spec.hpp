@@ -46,14 +46,23 @@ struct OutputParseResult {
 OutputParseResult parse_output_spec(std::string_view text);
 
 // An opened output: the sink and everything it needs (buses, pins, devices), owned together.
+// A hardware output also owns its device service thread (hal/device_service.hpp): sink().open()
+// starts it after opening the device and sink().close() stops it before putting the device to rest,
+// so while the sink plays, fault messages are formatted and a lost device is reconnected off the
+// render thread.
+// Threads: sink() is used as a DriveSink is (open/close on the control thread, write on the render
+// thread); description(), take_messages(), underruns() and device_gone() from the UI thread.
 class Output {
  public:
   virtual ~Output() = default;
   virtual DriveSink& sink() = 0;
   virtual std::string description() const = 0;
-  // Fault messages since the last call (from the driver's FaultLog), for the status line.
+  // Messages since the last call (faults formatted by the device service, warnings), for the
+  // status line and stderr.
   virtual std::vector<std::string> take_messages() { return {}; }
   virtual std::uint64_t underruns() const { return 0; }
+  // True while the device is gone and the service is reconnecting it.
+  virtual bool device_gone() const { return false; }
   // Runs the actuator's calibration (DRV2605L auto-calibration) and says what it found and where it
   // was stored. Throws std::runtime_error for outputs without one.
   virtual std::string calibrate();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hal/device_error.hpp"
+#include "hal/device_service.hpp"
 #include "hal/drv2605l_registers.hpp"
 #include "hal/rest_on_exit.hpp"
 #include "tests/hal/drv2605l_test_rig.hpp"
@@ -77,32 +78,39 @@ TEST(Drv2605lFaults, PersistentNackIsReportedOnceAndPlaybackGoesOn) {
   EXPECT_GT(rig.chip.peek(kRtpInput), 0);  // later writes got through
 }
 
-TEST(Drv2605lFaults, DeviceGoneIsReportedAndReconnectedWhenItReturns) {
-  Drv2605lOptions options;
-  options.reconnect_interval_s = 0.1;
-  Drv2605lRig rig(test::lra_profile(), options);
+TEST(Drv2605lFaults, DeviceGoneIsReportedAndTheServiceReconnectsItWhenItReturns) {
+  Drv2605lRig rig;
+  DeviceServiceOptions service_options;
+  service_options.first_reconnect_interval_s = 0.1;
+  DeviceService service(service_options);
+  service.add(*rig.driver);
+  auto service_time_ns = [&] { return rig.clock.now_us() * 1000; };  // one thread: the fake clock
   rig.driver->open(8000.0);
   Player player{*rig.driver};
   player.play(carrier(0.05));
   rig.bus.set_unplugged(true);
   player.play(carrier(0.3, 0.5));  // rendering goes on while it is gone
   EXPECT_TRUE(rig.driver->device_gone());
-  auto events = drain(rig.driver->faults());
-  ASSERT_EQ(events.size(), 1u);
-  EXPECT_EQ(events[0].kind, FaultKind::device_gone);
-  EXPECT_EQ(events[0].error_number, ENODEV);
+  service.poll(service_time_ns());
+  EXPECT_EQ(service.take_messages(),
+            (std::vector<std::string>{describe({FaultKind::device_gone, ENODEV, 0}, rig.bus.path())}));
   rig.bus.set_unplugged(false);
   const int resets_before = rig.chip.resets();
   player.play(carrier(0.3, 0.5));
+  EXPECT_TRUE(rig.driver->device_gone());  // the render thread does not reconnect
+  EXPECT_EQ(rig.chip.resets(), resets_before);
+  rig.clock.advance_us(100'000);
+  service.poll(service_time_ns());
   EXPECT_FALSE(rig.driver->device_gone());
-  events = drain(rig.driver->faults());
-  ASSERT_EQ(events.size(), 1u);
-  EXPECT_EQ(events[0].kind, FaultKind::reconnected);
-  EXPECT_GE(rig.bus.reopen_count(), 1);
+  EXPECT_EQ(service.take_messages(),
+            (std::vector<std::string>{describe({FaultKind::reconnected, 0, 0}, rig.bus.path())}));
+  EXPECT_EQ(rig.bus.reopen_count(), 1);
   EXPECT_EQ(rig.chip.resets(), resets_before + 1);  // initialized again
   EXPECT_EQ(rig.chip.peek(kMode) & 7u, kModeRtp);
+  player.play(carrier(0.3, 0.5));  // output resumes
   EXPECT_NEAR(rig.chip.peek(kRtpInput), 128, 6);
   EXPECT_TRUE(rig.chip.violations().empty());
+  EXPECT_TRUE(drain(rig.driver->faults()).empty());
 }
 
 TEST(Drv2605lFaults, OverCurrentStopsOutputAndSaysWhy) {

@@ -4,6 +4,10 @@
 #include <numbers>
 #include <vector>
 
+#include <cerrno>
+#include <string>
+
+#include "hal/device_service.hpp"
 #include "hal/hid_haptic_controller.hpp"
 #include "hal/hid_haptic_emulator.hpp"
 
@@ -98,19 +102,29 @@ TEST(HidHaptics, ShortBurstIsAClickSustainedDriveABuzzThatStops) {
   EXPECT_EQ(triggers.back().waveform, kWaveformStop);
 }
 
-TEST(HidHaptics, UnpluggedDeviceIsReportedAndReconnected) {
+TEST(HidHaptics, UnpluggedDeviceIsReportedAndTheServiceReconnectsIt) {
   Rig rig;
+  DeviceServiceOptions service_options;
+  service_options.first_reconnect_interval_s = 0.5;
+  DeviceService service(service_options);
+  service.add(rig.controller);
+  auto service_time_ns = [&] { return rig.clock.now_us() * 1000; };  // one thread: the fake clock
   rig.controller.open(8000.0);
   rig.device.set_unplugged(true);
   rig.play(burst(0.05, 0.6));
-  auto event = rig.controller.faults().pop();
-  ASSERT_TRUE(event);
-  EXPECT_EQ(event->kind, FaultKind::device_gone);
+  EXPECT_TRUE(rig.controller.device_gone());
+  service.poll(service_time_ns());
+  EXPECT_EQ(service.take_messages(),
+            (std::vector<std::string>{describe({FaultKind::device_gone, ENODEV, 0}, rig.device.path())}));
   rig.device.set_unplugged(false);
-  rig.play(std::vector<float>(8000, 0.0f));  // a second of silence: reconnection is tried
-  event = rig.controller.faults().pop();
-  ASSERT_TRUE(event);
-  EXPECT_EQ(event->kind, FaultKind::reconnected);
+  rig.play(std::vector<float>(8000, 0.0f));  // a second: the render thread does not reconnect
+  EXPECT_TRUE(rig.controller.device_gone());
+  EXPECT_EQ(rig.device.opens(), 1);
+  service.poll(service_time_ns());
+  EXPECT_FALSE(rig.controller.device_gone());
+  EXPECT_EQ(rig.device.opens(), 2);
+  EXPECT_EQ(service.take_messages(),
+            (std::vector<std::string>{describe({FaultKind::reconnected, 0, 0}, rig.device.path())}));
   const auto before = rig.device.triggers().size();
   rig.play(burst(0.01, 0.6));
   EXPECT_GT(rig.device.triggers().size(), before);
