@@ -2,35 +2,21 @@
 // --help and --version exit 0 on stdout, usage errors exit 2 naming the command, numbers must be
 // finite and in range.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 
 #include "cmdline/command_line.hpp"
+#include "run_command.hpp"
 
 namespace vimg {
 namespace {
 
-struct CommandRun {
-  int exit_code = -1;
-  std::string out;
-};
+using test::CommandRun;
 
-// Runs `PROGRAM ARGS` (a path below the build folder), capturing stdout and stderr together.
+// Runs `PROGRAM ARGS` (a path below the build folder).
 CommandRun run_program(const std::string& program, const std::string& args) {
-  const std::string cmd = "'" VIMG_BINARY_DIR "/" + program + "' " + args + " 2>&1";
-  CommandRun run;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (!pipe) return run;
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
+  return test::run_command("'" VIMG_BINARY_DIR "/" + program + "' " + args);
 }
 
 CommandRun vimg(const std::string& args) { return run_program("cli/vimg", args); }

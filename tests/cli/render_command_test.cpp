@@ -1,22 +1,19 @@
 // `vimg render` with hostile gestures: bounded time, bounded output, clear messages, no output.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include "run_command.hpp"
 
 namespace vimg {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct RenderRun {
-  int exit_code = -1;
-  std::string out;
-};
+using RenderRun = test::CommandRun;
 
 class RenderCommand : public ::testing::Test {
  protected:
@@ -31,14 +28,7 @@ class RenderCommand : public ::testing::Test {
   RenderRun render(const std::string& gesture, const std::string& out = "out.wav") {
     const std::string cmd = "cd '" + dir_.string() + "' && timeout 20 '" VIMG_BINARY_DIR "/cli/vimg' render '" VIMG_SOURCE_DIR
                             "/assets/examples/smiley.vimg' --gesture '" + gesture + "' --out " + out + " 2>&1";
-    RenderRun run;
-    FILE* pipe = ::popen(cmd.c_str(), "r");
-    char buffer[4096];
-    std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
-    const int status = ::pclose(pipe);
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return run;
+    return test::run_command(cmd);
   }
 
   std::string write_gesture(const std::string& rows) {

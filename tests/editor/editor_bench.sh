@@ -12,15 +12,9 @@ mkdir -p "$out"
 out=$(realpath "$out")
 export HOME="$out/home" XDG_CONFIG_HOME="$out/home/.config" XDG_STATE_HOME="$out/home/.state"
 mkdir -p "$HOME"
-display=""
-for n in $(seq 161 200); do
-  if [ ! -e "/tmp/.X$n-lock" ] && [ ! -e "/tmp/.X11-unix/X$n" ]; then display=$n; break; fi
-done
-Xvfb ":$display" -screen 0 1400x900x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb_pid=$!
-trap 'kill $xvfb_pid 2>/dev/null || true' EXIT
-export DISPLAY=":$display"
-for _ in $(seq 100); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+source "$here/../xvfb_display.sh"
+trap stop_xvfb EXIT
+start_xvfb 161 200 1400x900x24 "$out/xvfb.log"
 
 python3 "$here/make_many_primitives.py" 10000 "$out/many.vimg"
 echo "== frame time, 10 000 primitives, 3 runs of 300 frames"

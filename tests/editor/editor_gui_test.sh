@@ -21,26 +21,14 @@ export HOME="$art/home" XDG_CONFIG_HOME="$art/home/.config" XDG_STATE_HOME="$art
 export SDL_AUDIODRIVER=dummy
 
 # A display of our own.
-display=""
-for n in $(seq 91 160); do
-  if [ ! -e "/tmp/.X$n-lock" ] && [ ! -e "/tmp/.X11-unix/X$n" ]; then display=$n; break; fi
-done
-[ -n "$display" ] || { echo "FAIL: no free X display number"; exit 1; }
-Xvfb ":$display" -screen 0 1400x900x24 -nolisten tcp >"$art/xvfb.log" 2>&1 &
-xvfb_pid=$!
+source "$(dirname "$0")/../xvfb_display.sh"
 editor_pid=""
 cleanup() {
   if [ -n "$editor_pid" ]; then kill -9 "$editor_pid" 2>/dev/null || true; fi
-  kill "$xvfb_pid" 2>/dev/null || true
-  wait "$xvfb_pid" 2>/dev/null || true
+  stop_xvfb
 }
 trap cleanup EXIT
-export DISPLAY=":$display"
-for _ in $(seq 100); do
-  xdotool getdisplaygeometry >/dev/null 2>&1 && break
-  sleep 0.1
-done
-xdotool getdisplaygeometry >/dev/null || { echo "FAIL: Xvfb did not start"; cat "$art/xvfb.log"; exit 1; }
+start_xvfb 91 160 1400x900x24 "$art/xvfb.log"
 
 WX=0 WY=0 OX=0 OY=0 PPM=1
 # start NAME ARGS...: launches the editor, waits for its window and its canvas layout.

@@ -17,15 +17,9 @@ with open(sys.argv[1], "w") as f:
     f.write(f'  <surface id="huge" shape="polygon" points="{pts}" period="2" relief="0.5" pattern="sine" gain="0.8"/>\n')
     f.write('</vibroimage>\n')
 PY
-display=""
-for n in $(seq 201 240); do
-  if [ ! -e "/tmp/.X$n-lock" ] && [ ! -e "/tmp/.X11-unix/X$n" ]; then display=$n; break; fi
-done
-Xvfb ":$display" -screen 0 1400x900x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb_pid=$!
-trap 'kill $xvfb_pid 2>/dev/null || true' EXIT
-export DISPLAY=":$display"
-for _ in $(seq 100); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+source "$(dirname "$0")/../xvfb_display.sh"
+trap stop_xvfb EXIT
+start_xvfb 201 240 1400x900x24 "$out/xvfb.log"
 status=0
 "$editor" "$out/huge.vimg" --output none --recovery-dir "$out/rec" --benchmark-frames 5 >"$out/log.txt" 2>&1 || status=$?
 if [ "$status" -ne 0 ]; then
