@@ -1,23 +1,184 @@
 #include "storage/diagnostic.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace vimg {
 
+namespace {
+
+// The length of the valid UTF-8 sequence starting at text[i] and its code point, or 0 when the
+// byte does not start one (stray continuation, overlong form, surrogate, beyond U+10FFFF, cut).
+std::size_t utf8_sequence(std::string_view text, std::size_t i, std::uint32_t& code_point) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char b = byte(i);
+  std::size_t n = 0;
+  unsigned char low = 0x80, high = 0xBF;  // allowed range of the second byte
+  if (b >= 0xC2 && b <= 0xDF) {
+    n = 2;
+    code_point = b & 0x1Fu;
+  } else if (b >= 0xE0 && b <= 0xEF) {
+    n = 3;
+    code_point = b & 0x0Fu;
+    if (b == 0xE0) low = 0xA0;
+    if (b == 0xED) high = 0x9F;
+  } else if (b >= 0xF0 && b <= 0xF4) {
+    n = 4;
+    code_point = b & 0x07u;
+    if (b == 0xF0) low = 0x90;
+    if (b == 0xF4) high = 0x8F;
+  } else {
+    return 0;
+  }
+  if (i + n > text.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    const unsigned char c = byte(i + k);
+    if (k == 1 ? (c < low || c > high) : (c & 0xC0) != 0x80) return 0;
+    code_point = (code_point << 6) | (c & 0x3Fu);
+  }
+  return n;
+}
+
+bool hidden_control(std::uint32_t cp) {
+  return (cp >= 0x80 && cp <= 0x9F) ||      // C1 controls (0x9B is a CSI)
+         (cp >= 0x202A && cp <= 0x202E) ||  // bidirectional embeddings and overrides
+         (cp >= 0x2066 && cp <= 0x2069) ||  // bidirectional isolates
+         cp == 0x200E || cp == 0x200F || cp == 0x061C;
+}
+
+void append_hex(std::string& out, unsigned char b) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  out += "\\x";
+  out += kHex[b >> 4];
+  out += kHex[b & 15];
+}
+
+// Escapes `text` into at most `max_bytes`, then "..." when input is left over.
+std::string escape(std::string_view text, std::size_t max_bytes, bool double_backslashes) {
+  std::string out;
+  out.reserve(std::min(text.size(), max_bytes) + 3);
+  std::string piece;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    piece.clear();
+    const auto b = static_cast<unsigned char>(text[i]);
+    std::size_t used = 1;
+    if (b < 0x20 || b == 0x7F) {
+      append_hex(piece, b);
+    } else if (b == '\\' && double_backslashes) {
+      piece = "\\\\";
+    } else if (b < 0x80) {
+      piece = static_cast<char>(b);
+    } else {
+      std::uint32_t cp = 0;
+      const std::size_t n = utf8_sequence(text, i, cp);
+      if (n == 0) {
+        append_hex(piece, b);
+      } else {
+        used = n;
+        for (std::size_t k = 0; k < n; ++k) {
+          if (hidden_control(cp)) append_hex(piece, static_cast<unsigned char>(text[i + k]));
+          else piece += text[i + k];
+        }
+      }
+    }
+    if (out.size() + piece.size() > max_bytes) break;
+    out += piece;
+    i += used;
+  }
+  if (i < text.size()) out += "...";
+  return out;
+}
+
+}  // namespace
+
+std::string escape_input(std::string_view text, std::size_t max_bytes) { return escape(text, max_bytes, true); }
+
+std::string printable_message(std::string_view text) {
+  // Cheap when the text is already printable and short, which is the common case.
+  const bool plain = text.size() <= kMaxMessageBytes && std::all_of(text.begin(), text.end(), [](char c) {
+                       const auto b = static_cast<unsigned char>(c);
+                       return b >= 0x20 && b < 0x7F;
+                     });
+  if (plain) return std::string(text);
+  return escape(text, kMaxMessageBytes - 3, false);
+}
+
 std::string Diagnostic::to_string() const {
-  std::string text = file;
+  std::string text = printable_message(file);
   if (line > 0) {
     text += ':';
     text += std::to_string(line);
   }
   text += severity == Severity::error ? ": error: " : ": warning: ";
-  text += message;
+  text += printable_message(message);
   return text;
 }
 
 bool has_errors(const std::vector<Diagnostic>& diagnostics) {
   return std::any_of(diagnostics.begin(), diagnostics.end(),
                      [](const Diagnostic& d) { return d.severity == Diagnostic::Severity::error; });
+}
+
+DiagnosticList::DiagnosticList(std::string file, Order order, std::size_t limit)
+    : file_(std::move(file)), order_by_line_(order == Order::by_line), limit_(std::max<std::size_t>(limit, 1)) {}
+
+void DiagnosticList::drop(Diagnostic::Severity severity) {
+  if (severity == Diagnostic::Severity::error) ++dropped_errors_;
+  else ++dropped_warnings_;
+}
+
+void DiagnosticList::count(Diagnostic::Severity severity) {
+  if (severity == Diagnostic::Severity::error) ++errors_;
+  drop(severity);
+  ++order_;
+}
+
+void DiagnosticList::find_worst() {
+  worst_ = 0;
+  for (std::size_t i = 1; i < kept_.size(); ++i) {
+    if (before(kept_[worst_], kept_[i])) worst_ = i;
+  }
+}
+
+void DiagnosticList::add(Diagnostic::Severity severity, int line, std::string_view message) {
+  if (severity == Diagnostic::Severity::error) ++errors_;
+  Entry entry{{severity, file_, line, printable_message(message)}, order_++};
+  if (kept_.size() < limit_) {
+    kept_.push_back(std::move(entry));
+    if (kept_.size() == 1 || before(kept_[worst_], kept_.back())) worst_ = kept_.size() - 1;
+    return;
+  }
+  if (!before(entry, kept_[worst_])) {
+    drop(severity);
+    return;
+  }
+  drop(kept_[worst_].diagnostic.severity);
+  kept_[worst_] = std::move(entry);
+  find_worst();
+}
+
+std::vector<Diagnostic> DiagnosticList::take() {
+  std::sort(kept_.begin(), kept_.end(), [this](const Entry& a, const Entry& b) { return before(a, b); });
+  std::vector<Diagnostic> out;
+  out.reserve(kept_.size() + 1);
+  for (Entry& e : kept_) out.push_back(std::move(e.diagnostic));
+  const std::size_t dropped = dropped_errors_ + dropped_warnings_;
+  if (dropped > 0) {
+    const auto counted = [](std::size_t n, const char* what) {
+      return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+    };
+    std::string parts;
+    if (dropped_errors_ > 0) parts = counted(dropped_errors_, "error");
+    if (dropped_warnings_ > 0) parts += (parts.empty() ? "" : ", ") + counted(dropped_warnings_, "warning");
+    out.push_back({dropped_errors_ > 0 ? Diagnostic::Severity::error : Diagnostic::Severity::warning, file_, 0,
+                   std::to_string(dropped) + " more " + (dropped == 1 ? "diagnostic" : "diagnostics") +
+                       " not shown: " + parts + " (limit " + std::to_string(limit_) + " per file)"});
+  }
+  kept_.clear();
+  worst_ = 0;
+  dropped_errors_ = dropped_warnings_ = 0;
+  return out;
 }
 
 }  // namespace vimg

@@ -97,13 +97,14 @@ constexpr std::size_t kMaxSlots = 16;
 
 class Reader {
  public:
-  explicit Reader(const std::string& file_name) : file_(file_name) {}
+  explicit Reader(const std::string& file_name) : list_(file_name, DiagnosticList::Order::by_line) {}
 
   LoadResult run(std::string_view xml) {
     LoadResult result;
     if (xml.size() > kMaxImageFileBytes) {
-      error(0, "file is larger than " + std::to_string(kMaxImageFileBytes / (1024 * 1024)) + " MiB");
-      result.diagnostics = std::move(diagnostics_);
+      error(0, "file is larger than " + std::to_string(kMaxImageFileBytes / kMiB) + " MiB (limit " +
+                   std::to_string(kMaxImageFileBytes) + ")");
+      result.diagnostics = list_.take();
       return result;
     }
     tinyxml2::XMLDocument doc(true, tinyxml2::PRESERVE_WHITESPACE);
@@ -118,32 +119,28 @@ class Reader {
       if (root == nullptr) {
         error(1, "no root element, expected <vibroimage>");
       } else if (std::string_view(root->Name()) != "vibroimage") {
-        error(root->GetLineNum(), std::string("root element is <") + root->Name() + ">, expected <vibroimage>");
+        error(root->GetLineNum(), "root element is " + tag(*root) + ", expected <vibroimage>");
       } else if (const XMLElement* extra = root->NextSiblingElement()) {
-        error(extra->GetLineNum(), std::string("second root element <") + extra->Name() + "> after <vibroimage>");
+        error(extra->GetLineNum(), "second root element " + tag(*extra) + " after <vibroimage>");
       } else {
         Image image;
         read_root(*root, image);
         check_duplicate_ids();
-        if (!failed_) result.image = std::move(image);
+        if (!failed()) result.image = std::move(image);
       }
     }
-    std::stable_sort(diagnostics_.begin(), diagnostics_.end(),
-                     [](const Diagnostic& a, const Diagnostic& b) { return a.line < b.line; });
-    result.diagnostics = std::move(diagnostics_);
+    result.diagnostics = list_.take();
     return result;
   }
 
  private:
-  void error(int line, std::string message) {
-    failed_ = true;
-    diagnostics_.push_back({Diagnostic::Severity::error, file_, line, std::move(message)});
-  }
-  void warning(int line, std::string message) {
-    diagnostics_.push_back({Diagnostic::Severity::warning, file_, line, std::move(message)});
-  }
+  void error(int line, std::string_view message) { list_.error(line, message); }
+  void warning(int line, std::string_view message) { list_.warning(line, message); }
+  bool failed() const { return list_.has_errors(); }
 
-  static std::string tag(const XMLElement& e) { return std::string("<") + e.Name() + ">"; }
+  // Input in a message: escaped and cut (docs/limits.md, "Messages").
+  static std::string q(std::string_view input) { return escape_input(input); }
+  static std::string tag(const XMLElement& e) { return "<" + q(e.Name()) + ">"; }
 
   // Indexes the attributes of `e` by their place in `known` (one pass, read by attribute()).
   // Unknown attributes become warnings and are returned verbatim in order.
@@ -158,7 +155,11 @@ class Reader {
         slots_[slot] = a;
         continue;
       }
-      warning(a->GetLineNum(), "unknown attribute '" + std::string(name) + "' on " + tag(e) + " kept as is");
+      if (list_.keeps(a->GetLineNum())) {
+        warning(a->GetLineNum(), "unknown attribute '" + q(name) + "' on " + tag(e) + " kept as is");
+      } else {
+        list_.count(Diagnostic::Severity::warning);
+      }
       extras.emplace_back(a->Name(), a->Value());
     }
     return extras;
@@ -190,12 +191,12 @@ class Reader {
     }
     const ParsedNumber parsed = parse_decimal(a->Value());
     if (const auto* reason = std::get_if<std::string>(&parsed)) {
-      error(a->GetLineNum(), tag(e) + " attribute '" + name + "' = \"" + a->Value() + "\" " + *reason);
+      error(a->GetLineNum(), tag(e) + " attribute '" + name + "' = \"" + q(a->Value()) + "\" " + *reason);
       return fallback.value_or(0.0);
     }
     const double value = std::get<double>(parsed);
     if (!in_range(value, range)) {
-      error(a->GetLineNum(), tag(e) + " attribute '" + name + "' must be " + range_text(range) + ", got " + a->Value());
+      error(a->GetLineNum(), tag(e) + " attribute '" + name + "' must be " + range_text(range) + ", got " + q(a->Value()));
     }
     return value;
   }
@@ -205,7 +206,7 @@ class Reader {
     if (a == nullptr) return;
     element.id = a->Value();
     if (!is_valid_id(element.id)) {
-      error(a->GetLineNum(), tag(e) + " id \"" + element.id + "\" must match [A-Za-z_][A-Za-z0-9_.-]*");
+      error(a->GetLineNum(), tag(e) + " id \"" + q(element.id) + "\" must match [A-Za-z_][A-Za-z0-9_.-]*");
       return;
     }
     ids_.emplace_back(std::string_view(a->Value()), a->GetLineNum());
@@ -226,7 +227,7 @@ class Reader {
         for (std::size_t k = run; k < j; ++k) {
           const auto& first = ids_[keys[k].second];
           if (first.first != later.first) continue;  // a hash collision, not a duplicate
-          error(later.second, "duplicate id '" + std::string(later.first) + "' (first used on line " +
+          error(later.second, "duplicate id '" + q(later.first) + "' (first used on line " +
                                   std::to_string(first.second) + ")");
           break;
         }
@@ -284,7 +285,7 @@ class Reader {
       return !s.empty() && s.size() <= 6 && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
     };
     if (dot == std::string_view::npos || !digits(text.substr(0, dot)) || !digits(text.substr(dot + 1))) {
-      error(a->GetLineNum(), "<vibroimage> attribute 'version' = \"" + std::string(text) + "\" is not MAJOR.MINOR");
+      error(a->GetLineNum(), "<vibroimage> attribute 'version' = \"" + q(text) + "\" is not MAJOR.MINOR");
       return;
     }
     image.version_major = std::stoi(std::string(text.substr(0, dot)));
@@ -324,7 +325,7 @@ class Reader {
 
   void collect_ignored_attributes(const XMLElement& e) {
     for (const XMLAttribute* a = e.FirstAttribute(); a != nullptr; a = a->Next()) {
-      warning(a->GetLineNum(), "unknown attribute '" + std::string(a->Name()) + "' on " + tag(e) + " is ignored");
+      warning(a->GetLineNum(), "unknown attribute '" + q(a->Name()) + "' on " + tag(e) + " is ignored");
     }
   }
 
@@ -378,7 +379,7 @@ class Reader {
       } else if (name == "created") {
         read_meta_text(*c, meta.created);
         if (meta.created && !is_iso8601(*meta.created)) {
-          error(c->GetLineNum(), "<created> \"" + *meta.created + "\" is not an ISO 8601 date (YYYY-MM-DD[THH:MM[:SS]][Z])");
+          error(c->GetLineNum(), "<created> \"" + q(*meta.created) + "\" is not an ISO 8601 date (YYYY-MM-DD[THH:MM[:SS]][Z])");
         }
       } else if (name == "tag") {
         std::optional<std::string> tag_text;
@@ -467,10 +468,10 @@ class Reader {
   }
 
   void warn_if_outside(const XMLElement& e, const Bounds& b) {
-    if (failed_) return;
+    if (failed()) return;
     if (b.max_x < 0.0 || b.max_y < 0.0 || b.min_x > canvas_w_ || b.min_y > canvas_h_) {
       const char* id = e.Attribute("id");
-      const std::string what = id != nullptr ? std::string("<") + e.Name() + " id=\"" + id + "\">" : tag(e);
+      const std::string what = id != nullptr ? "<" + q(e.Name()) + " id=\"" + q(id) + "\">" : tag(e);
       warning(e.GetLineNum(), what + " lies wholly outside the " + format_decimal(canvas_w_) + " x " +
                                   format_decimal(canvas_h_) + " mm canvas");
     }
@@ -519,17 +520,18 @@ class Reader {
       while (end < text.size() && !is_space(text[end])) ++end;
       const std::string_view pair = text.substr(i, end - i);
       const auto comma = pair.find(',');
-      const std::string where = "<surface> attribute 'points': point " + std::to_string(points.size() + 1) + " \"" +
-                                std::string(pair) + "\"";
+      const auto where = [&] {
+        return "<surface> attribute 'points': point " + std::to_string(points.size() + 1) + " \"" + q(pair) + "\"";
+      };
       if (comma == std::string_view::npos) {
-        error(a->GetLineNum(), where + " is not x,y");
+        error(a->GetLineNum(), where() + " is not x,y");
         return {};
       }
       const ParsedNumber x = parse_decimal(pair.substr(0, comma));
       const ParsedNumber y = parse_decimal(pair.substr(comma + 1));
       for (const ParsedNumber* p : {&x, &y}) {
         if (const auto* reason = std::get_if<std::string>(p)) {
-          error(a->GetLineNum(), where + ": " + (p == &x ? "x " : "y ") + *reason);
+          error(a->GetLineNum(), where() + ": " + (p == &x ? "x " : "y ") + *reason);
           return {};
         }
       }
@@ -582,8 +584,7 @@ class Reader {
         }
       }
     } else {
-      error(shape->GetLineNum(), std::string("<surface> attribute 'shape' = \"") + shape->Value() +
-                                     "\" must be rect, ellipse or polygon");
+      error(shape->GetLineNum(), "<surface> attribute 'shape' = \"" + q(shape->Value()) + "\" must be rect, ellipse or polygon");
     }
     s.period_mm = number(e, "period", Range::positive, Surface{}.period_mm);
     s.relief_mm = number(e, "relief", Range::positive, Surface{}.relief_mm);
@@ -600,7 +601,7 @@ class Reader {
     if (v == "sine") return SurfacePattern::sine;
     if (v == "square") return SurfacePattern::square;
     if (v == "triangle") return SurfacePattern::triangle;
-    error(a->GetLineNum(), "<surface> attribute 'pattern' = \"" + std::string(v) + "\" must be sine, square or triangle");
+    error(a->GetLineNum(), "<surface> attribute 'pattern' = \"" + q(v) + "\" must be sine, square or triangle");
     return Surface{}.pattern;
   }
 
@@ -621,9 +622,7 @@ class Reader {
     return g;
   }
 
-  std::string file_;
-  std::vector<Diagnostic> diagnostics_;
-  bool failed_ = false;
+  DiagnosticList list_;
   std::vector<std::pair<std::string_view, int>> ids_;  // id text (owned by the document), line
   AttributeNames known_;
   std::array<const XMLAttribute*, kMaxSlots> slots_{};

@@ -117,21 +117,22 @@ std::vector<std::string> split_vectors(const std::string& text) {
 
 class Reader {
  public:
-  Reader(std::string_view bytes, const std::string& file) : bytes_(bytes), file_(file) {}
+  Reader(std::string_view bytes, const std::string& file) : bytes_(bytes), list_(file) {}
 
   NrrdLoadResult run() {
     if (parse_header() && check_header()) decode();
-    if (has_errors(result_.diagnostics)) {
+    if (failed()) {
       result_.scalar.reset();
       result_.vector.reset();
     }
+    result_.diagnostics = list_.take();
     return std::move(result_);
   }
 
  private:
-  void error(int line, std::string message) {
-    result_.diagnostics.push_back({Diagnostic::Severity::error, file_, line, std::move(message)});
-  }
+  void error(int line, std::string_view message) { list_.error(line, message); }
+  bool failed() const { return list_.has_errors(); }
+  static std::string q(std::string_view input) { return escape_input(input); }
 
   // Fields that carry nothing the volume backend uses but are valid NRRD.
   static bool ignorable(const std::string& field) {
@@ -146,8 +147,10 @@ class Reader {
     std::size_t pos = 0;
     int line_number = 0;
     bool saw_blank = false;
-    while (pos < bytes_.size()) {
-      const std::size_t eol = bytes_.find('\n', pos);
+    // The header is searched within its limit only, however large the file.
+    const std::string_view header = bytes_.substr(0, kMaxNrrdHeaderBytes + 1);
+    while (pos < header.size()) {
+      const std::size_t eol = header.find('\n', pos);
       if (eol == std::string_view::npos) {
         break;
       }
@@ -173,16 +176,21 @@ class Reader {
       if (line.find(":=") != std::string::npos) continue;  // key/value pair
       const std::size_t colon = line.find(": ");
       if (colon == std::string::npos) {
-        error(line_number, "expected 'field: value', got '" + line.substr(0, 60) + "'");
+        error(line_number, "expected 'field: value', got '" + q(line) + "'");
         continue;
       }
       const std::string field = line.substr(0, colon);
       const std::string value = trim(std::string_view(line).substr(colon + 2));
       if (fields_.count(field)) {
-        error(line_number, "field '" + field + "' given twice (first on line " + std::to_string(fields_[field].line) + ")");
+        error(line_number, "field '" + q(field) + "' given twice (first on line " + std::to_string(fields_[field].line) + ")");
         continue;
       }
       fields_[field] = {value, line_number};
+    }
+    if (!saw_blank && header.size() > kMaxNrrdHeaderBytes) {
+      error(line_number + 1, "the header is longer than " + std::to_string(kMaxNrrdHeaderBytes) + " bytes (limit " +
+                                 std::to_string(kMaxNrrdHeaderBytes) + ")");
+      return false;
     }
     if (line_number == 0) {
       error(0, "empty file, expected a NRRD header");
@@ -198,9 +206,9 @@ class Reader {
                                                   "space dimension", "kinds", "space units",
                                                   "byte skip", "byteskip", "line skip", "lineskip",
                                                   "data file", "datafile"};
-      if (!known.count(field) && !ignorable(field)) error(entry.line, "unknown field '" + field + "'");
+      if (!known.count(field) && !ignorable(field)) error(entry.line, "unknown field '" + q(field) + "'");
     }
-    return !has_errors(result_.diagnostics);
+    return !failed();
   }
 
   struct Entry {
@@ -234,11 +242,11 @@ class Reader {
     if (!type || !dimension || !sizes || !encoding) return false;
 
     if (const auto t = parse_type(type->value)) type_ = *t;
-    else error(type->line, "unsupported type '" + type->value + "'");
+    else error(type->line, "unsupported type '" + q(type->value) + "'");
 
     const auto dim = parse_integer(dimension->value);
     if (!dim || (*dim != 3 && *dim != 4)) {
-      error(dimension->line, "dimension must be 3 (scalar) or 4 (3-vector), got '" + dimension->value + "'");
+      error(dimension->line, "dimension must be 3 (scalar) or 4 (3-vector), got '" + q(dimension->value) + "'");
       return false;
     }
     dimension_ = static_cast<int>(*dim);
@@ -252,7 +260,7 @@ class Reader {
     for (std::size_t i = 0; i < size_words.size(); ++i) {
       const auto n = parse_integer(size_words[i]);
       if (!n || *n < 1 || *n > static_cast<long long>(kMaxVolumeSamples)) {
-        error(sizes->line, "size '" + size_words[i] + "' is not a positive integer within limits");
+        error(sizes->line, "size '" + q(size_words[i]) + "' is not a positive integer within limits");
         return false;
       }
       sizes_[i] = static_cast<int>(*n);
@@ -270,32 +278,32 @@ class Reader {
     if (const Entry* kinds = field("kinds"); kinds && vector_) {
       const auto k = split_words(kinds->value);
       static const std::set<std::string> vector_kinds = {"vector", "3-vector", "covariant-vector", "normal", "3-color", "RGB-color", "list", "point"};
-      if (k.empty() || !vector_kinds.count(k[0])) error(kinds->line, "the first axis of a vector volume must have a vector kind, got '" + (k.empty() ? std::string() : k[0]) + "'");
+      if (k.empty() || !vector_kinds.count(k[0])) error(kinds->line, "the first axis of a vector volume must have a vector kind, got '" + (k.empty() ? std::string() : q(k[0])) + "'");
     }
 
     if (encoding->value == "raw") encoding_ = Encoding::raw;
     else if (encoding->value == "gzip" || encoding->value == "gz") encoding_ = Encoding::gzip;
     else if (encoding->value == "ascii" || encoding->value == "text" || encoding->value == "txt") encoding_ = Encoding::ascii;
-    else error(encoding->line, "unsupported encoding '" + encoding->value + "' (raw, gzip or ascii)");
+    else error(encoding->line, "unsupported encoding '" + q(encoding->value) + "' (raw, gzip or ascii)");
 
     if (encoding_ != Encoding::ascii && sample_bytes(type_) > 1) {
       const Entry* endian = field("endian");
       if (!endian) error(0, "missing field 'endian', required for multi-byte binary samples");
       else if (endian->value == "little") big_endian_ = false;
       else if (endian->value == "big") big_endian_ = true;
-      else error(endian->line, "endian must be 'little' or 'big', got '" + endian->value + "'");
+      else error(endian->line, "endian must be 'little' or 'big', got '" + q(endian->value) + "'");
     }
     if (const Entry* sd = field("space dimension"); sd && sd->value != "3") {
       error(sd->line, "space dimension must be 3");
     }
     if (const Entry* units = field("space units")) {
       for (const auto& u : split_words(units->value)) {
-        if (u != "\"mm\"" && u != "mm") error(units->line, "space units must be millimetres (\"mm\"), got " + u);
+        if (u != "\"mm\"" && u != "mm") error(units->line, "space units must be millimetres (\"mm\"), got " + q(u));
       }
     }
     geometry_.size = {sizes_[vector_ ? 1 : 0], sizes_[vector_ ? 2 : 1], sizes_[vector_ ? 3 : 2]};
     read_geometry();
-    return !has_errors(result_.diagnostics);
+    return !failed();
   }
 
   void read_geometry() {
@@ -316,7 +324,7 @@ class Reader {
       for (int i = 0; i < 3; ++i) {
         const auto v = parse_number(words[static_cast<std::size_t>(i + (vector_ ? 1 : 0))]);
         if (!v || !(*v > 0.0)) {
-          error(spacings->line, "spacing '" + words[static_cast<std::size_t>(i + (vector_ ? 1 : 0))] + "' is not a positive number");
+          error(spacings->line, "spacing '" + q(words[static_cast<std::size_t>(i + (vector_ ? 1 : 0))]) + "' is not a positive number");
           return;
         }
         s[static_cast<std::size_t>(i)] = *v;
@@ -336,7 +344,7 @@ class Reader {
       for (int i = 0; i < 3; ++i) {
         const auto v = parse_vector(items[static_cast<std::size_t>(i + (vector_ ? 1 : 0))]);
         if (!v) {
-          error(directions->line, "space direction '" + items[static_cast<std::size_t>(i + (vector_ ? 1 : 0))] + "' is not (x,y,z)");
+          error(directions->line, "space direction '" + q(items[static_cast<std::size_t>(i + (vector_ ? 1 : 0))]) + "' is not (x,y,z)");
           return;
         }
         const std::array<double, 3> c{v->x, v->y, v->z};
@@ -358,7 +366,7 @@ class Reader {
     if (const Entry* origin = field("space origin")) {
       const auto v = parse_vector(origin->value);
       if (!v) {
-        error(origin->line, "space origin must be (x,y,z), got '" + origin->value + "'");
+        error(origin->line, "space origin must be (x,y,z), got '" + q(origin->value) + "'");
         return;
       }
       origin_mm = *v;
@@ -488,7 +496,7 @@ class Reader {
       const std::string_view word = text.substr(i, end - i);
       const auto v = parse_number(word);
       if (!v) {
-        error(line, "'" + std::string(word.substr(0, 40)) + "' is not a number");
+        error(line, "'" + q(word) + "' is not a number");
         return false;
       }
       if (count == samples.size()) {
@@ -508,7 +516,7 @@ class Reader {
   enum class Encoding { raw, gzip, ascii };
 
   std::string_view bytes_;
-  std::string file_;
+  DiagnosticList list_;
   NrrdLoadResult result_;
   std::map<std::string, Entry> fields_;
   std::size_t data_offset_ = 0;

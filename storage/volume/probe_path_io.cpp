@@ -7,13 +7,12 @@ namespace vimg {
 ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::string& file_name) {
   ProbePathParseResult result;
   std::vector<ProbePathPoint> path;
-  auto error = [&](int line, std::string message) {
-    result.diagnostics.push_back({Diagnostic::Severity::error, file_name, line, std::move(message)});
-  };
+  DiagnosticList list(file_name);
+  auto error = [&](int line, std::string_view message) { list.error(line, message); };
   int line = 0;
   bool header_seen = false;
   std::size_t pos = 0;
-  while (pos < text.size() && result.diagnostics.size() < 20) {
+  while (pos < text.size()) {
     std::size_t eol = text.find('\n', pos);
     if (eol == std::string_view::npos) eol = text.size();
     std::string_view row = text.substr(pos, eol - pos);
@@ -39,7 +38,7 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
       }
       const ParsedNumber parsed = parse_decimal(cell);
       if (const auto* why = std::get_if<std::string>(&parsed)) {
-        error(line, "column " + std::to_string(n + 1) + ": '" + std::string(cell.substr(0, 40)) + "' " + *why);
+        error(line, "column " + std::to_string(n + 1) + ": '" + escape_input(cell) + "' " + *why);
         bad = true;
         break;
       }
@@ -59,8 +58,9 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
     path.push_back({v[0], Vec3{v[1], v[2], v[3]} * 1e-3});
   }
   if (!header_seen) error(0, "empty file, expected the header 'time_s,x_mm,y_mm,z_mm'");
-  else if (path.empty() && !has_errors(result.diagnostics)) error(line, "the path has no rows");
-  if (!has_errors(result.diagnostics)) result.path = std::move(path);
+  else if (path.empty() && !list.has_errors()) error(line, "the path has no rows");
+  if (!list.has_errors()) result.path = std::move(path);
+  result.diagnostics = list.take();
   return result;
 }
 

@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 #include "storage/volume/nrrd.hpp"
 #include "storage/volume/volume_scene_io.hpp"
@@ -17,9 +18,9 @@ using tinyxml2::XMLElement;
 
 class SceneReader {
  public:
-  explicit SceneReader(const std::string& file) : file_(file) {}
+  explicit SceneReader(DiagnosticList& list) : list_(list) {}
 
-  VolumeSceneParseResult run(std::string_view xml) {
+  std::optional<VolumeScene> run(std::string_view xml) {
     tinyxml2::XMLDocument doc;
     if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
       error(doc.ErrorLineNum(), std::string("malformed XML: ") + doc.ErrorName());
@@ -47,34 +48,33 @@ class SceneReader {
         read_kinaesthetic(e);
       } else if (name == "roughness") read_roughness(e);
       else if (name == "transitionCue") read_cue(e);
-      else error(e->GetLineNum(), "unknown element <" + std::string(name) + ">");
+      else error(e->GetLineNum(), "unknown element <" + q(name) + ">");
     }
     check_references();
     return finish();
   }
 
  private:
-  void error(int line, std::string message) {
-    result_.diagnostics.push_back({Diagnostic::Severity::error, file_, line, std::move(message)});
-  }
+  void error(int line, std::string_view message) { list_.error(line, message); }
+  static std::string q(std::string_view input) { return escape_input(input); }
 
-  VolumeSceneParseResult finish() {
-    if (!has_errors(result_.diagnostics)) result_.scene = std::move(scene_);
-    return std::move(result_);
+  std::optional<VolumeScene> finish() {
+    if (list_.has_errors()) return std::nullopt;
+    return std::move(scene_);
   }
 
   void check_attributes(const XMLElement* e, std::initializer_list<std::string_view> allowed) {
     for (const XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
       bool known = false;
       for (auto name : allowed) known = known || name == a->Name();
-      if (!known) error(e->GetLineNum(), "unknown attribute '" + std::string(a->Name()) + "' on <" + e->Name() + ">");
+      if (!known) error(e->GetLineNum(), "unknown attribute '" + q(a->Name()) + "' on <" + q(e->Name()) + ">");
     }
   }
 
   std::optional<std::string> text(const XMLElement* e, const char* name, bool required) {
     const char* v = e->Attribute(name);
     if (!v) {
-      if (required) error(e->GetLineNum(), "<" + std::string(e->Name()) + "> needs attribute '" + name + "'");
+      if (required) error(e->GetLineNum(), "<" + q(e->Name()) + "> needs attribute '" + name + "'");
       return std::nullopt;
     }
     return std::string(v);
@@ -86,12 +86,12 @@ class SceneReader {
     if (!t) return;
     const ParsedNumber parsed = parse_decimal(*t);
     if (const auto* why = std::get_if<std::string>(&parsed)) {
-      error(e->GetLineNum(), std::string("attribute '") + name + "': '" + *t + "' " + *why);
+      error(e->GetLineNum(), std::string("attribute '") + name + "': '" + q(*t) + "' " + *why);
       return;
     }
     const double v = std::get<double>(parsed);
     if (exclusive_min ? !(v > min) : !(v >= min)) {
-      error(e->GetLineNum(), std::string("attribute '") + name + "' must be " + (exclusive_min ? "> " : ">= ") + format_decimal(min) + ", got " + *t);
+      error(e->GetLineNum(), std::string("attribute '") + name + "' must be " + (exclusive_min ? "> " : ">= ") + format_decimal(min) + ", got " + q(*t));
       return;
     }
     out = v;
@@ -109,14 +109,14 @@ class SceneReader {
     int n = 0;
     while (n < 4 && in >> w[n]) ++n;
     if (n != 3) {
-      error(e->GetLineNum(), std::string("attribute '") + name + "' needs three numbers, got '" + *t + "'");
+      error(e->GetLineNum(), std::string("attribute '") + name + "' needs three numbers, got '" + q(*t) + "'");
       return;
     }
     double v[3];
     for (int i = 0; i < 3; ++i) {
       const ParsedNumber p = parse_decimal(w[i]);
       if (!std::holds_alternative<double>(p)) {
-        error(e->GetLineNum(), std::string("attribute '") + name + "': '" + w[i] + "' is not a number");
+        error(e->GetLineNum(), std::string("attribute '") + name + "': '" + q(w[i]) + "' is not a number");
         return;
       }
       v[i] = std::get<double>(p);
@@ -138,10 +138,10 @@ class SceneReader {
     ref.file = text(e, "file", true).value_or("");
     for (const auto& other : scene_.data) {
       if (!ref.id.empty() && other.id == ref.id) {
-        error(e->GetLineNum(), "duplicate data id '" + ref.id + "' (first on line " + std::to_string(other.source_line) + ")");
+        error(e->GetLineNum(), "duplicate data id '" + q(ref.id) + "' (first on line " + std::to_string(other.source_line) + ")");
       }
     }
-    if (e->FirstChildElement()) error(e->GetLineNum(), "<" + std::string(e->Name()) + "> takes no children");
+    if (e->FirstChildElement()) error(e->GetLineNum(), "<" + q(e->Name()) + "> takes no children");
     scene_.data.push_back(std::move(ref));
   }
 
@@ -166,7 +166,7 @@ class SceneReader {
     if (mode == "gradientForce") k.mode = KinaestheticMode::gradient_force;
     else if (mode == "yieldingSurface") k.mode = KinaestheticMode::yielding_surface;
     else if (mode == "vectorGuidance") k.mode = KinaestheticMode::vector_guidance;
-    else if (!mode.empty()) error(e->GetLineNum(), "mode must be gradientForce, yieldingSurface or vectorGuidance, got '" + mode + "'");
+    else if (!mode.empty()) error(e->GetLineNum(), "mode must be gradientForce, yieldingSurface or vectorGuidance, got '" + q(mode) + "'");
     k.data = text(e, "data", true).value_or("");
     any_number(e, "scale", k.scale_N_mm);
     number(e, "stiffness", k.stiffness_N_per_m, 0.0, true);
@@ -211,7 +211,7 @@ class SceneReader {
       } else if (name == "amplitude") {
         read_points(c, "N", r.amplitude_points, 0.0, false);
       } else {
-        error(c->GetLineNum(), "unknown element <" + std::string(name) + "> in <roughness>");
+        error(c->GetLineNum(), "unknown element <" + q(name) + "> in <roughness>");
       }
     }
     if (saw_period && saw_omega) error(e->GetLineNum(), "<roughness> takes <period> or <omega> points, not both");
@@ -249,9 +249,9 @@ class SceneReader {
   void expect_data(const std::string& id, VolumeDataRef::Kind kind, int line, const char* who) {
     if (id.empty()) return;  // already reported
     const VolumeDataRef* d = find(id);
-    if (!d) error(line, std::string(who) + " names data '" + id + "', which the scene does not declare");
+    if (!d) error(line, std::string(who) + " names data '" + q(id) + "', which the scene does not declare");
     else if (d->kind != kind) {
-      error(line, std::string(who) + " needs " + (kind == VolumeDataRef::Kind::scalar ? "scalar" : "vector") + " data, '" + id + "' is not");
+      error(line, std::string(who) + " needs " + (kind == VolumeDataRef::Kind::scalar ? "scalar" : "vector") + " data, '" + q(id) + "' is not");
     }
   }
 
@@ -263,10 +263,9 @@ class SceneReader {
                                 ? scene_.kinaesthetic->yield_force_N
                                 : scene_.kinaesthetic->across_force_N;
     if (amplitude_N >= strength) {
-      result_.diagnostics.push_back({Diagnostic::Severity::warning, file_, line,
-                                     std::string(what) + " amplitude " + format_decimal(amplitude_N) +
-                                         " N is not below the kinaesthetic strength " + format_decimal(strength) +
-                                         " N: the vibration may mask the structure"});
+      list_.warning(line, std::string(what) + " amplitude " + format_decimal(amplitude_N) +
+                              " N is not below the kinaesthetic strength " + format_decimal(strength) +
+                              " N: the vibration may mask the structure");
     }
   }
 
@@ -291,25 +290,26 @@ class SceneReader {
     }
   }
 
-  std::string file_;
+  DiagnosticList& list_;
   VolumeScene scene_;
-  VolumeSceneParseResult result_;
   int kinaesthetic_line_ = 0;
   std::vector<int> roughness_lines_;
   std::vector<int> cue_lines_;
 };
 
-constexpr std::size_t kMaxSceneBytes = 4u << 20;
-
 }  // namespace
 
 VolumeSceneParseResult parse_volume_scene_xml(std::string_view xml, const std::string& file_name) {
-  if (xml.size() > kMaxSceneBytes) {
-    VolumeSceneParseResult r;
-    r.diagnostics.push_back({Diagnostic::Severity::error, file_name, 0, "scene file is larger than 4 MiB"});
-    return r;
+  VolumeSceneParseResult result;
+  DiagnosticList list(file_name);
+  if (xml.size() > kMaxSceneFileBytes) {
+    list.error(0, "scene file is larger than " + std::to_string(kMaxSceneFileBytes / kMiB) + " MiB (limit " +
+                      std::to_string(kMaxSceneFileBytes) + ")");
+  } else {
+    result.scene = SceneReader(list).run(xml);
   }
-  return SceneReader(file_name).run(xml);
+  result.diagnostics = list.take();
+  return result;
 }
 
 VolumeSceneLoadResult load_volume_scene_file(const std::filesystem::path& path) {

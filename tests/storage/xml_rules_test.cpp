@@ -184,7 +184,7 @@ TEST(XmlRules, FilesOverTheSizeLimitAreRejectedBeforeParsing) {
   xml.append(kMaxImageFileBytes + 1 - xml.size(), ' ');
   const LoadResult r = parse_image_xml(xml, "big.vimg");
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.diagnostics[0].to_string(), "big.vimg: error: file is larger than 64 MiB");
+  EXPECT_EQ(r.diagnostics[0].to_string(), "big.vimg: error: file is larger than 64 MiB (limit 67108864)");
   xml.pop_back();
   EXPECT_TRUE(parse_image_xml(xml, "ok.vimg").ok()) << "exactly 64 MiB is allowed";
 }
