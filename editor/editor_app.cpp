@@ -18,6 +18,11 @@ namespace vimg::editor {
 namespace {
 
 constexpr double kFramePeriodS = 1.0 / 60.0;
+// Idle: after this many frames without input (ImGui settles hover and popup state in a frame or
+// two) the editor stops drawing until an event arrives, waking at kIdleWakeMs for autosave and
+// status. Playing mode draws continuously (the oscilloscope and the finger trail move).
+constexpr int kSettleFrames = 3;
+constexpr int kIdleWakeMs = 250;
 constexpr float kToolsWidth = 210.0f;
 constexpr float kPropertiesWidth = 330.0f;
 constexpr float kStatusHeight = 26.0f;
@@ -141,6 +146,25 @@ int EditorApp::run() {
       if (frames >= options_.benchmark_frames) break;
       continue;
     }
+    ++frames_since_input_;
+    if (!play_mode_ && frames_since_input_ > kSettleFrames && held_events_.empty()) {
+      // Nothing moves: sleep until the user does something, waking only to autosave. A frame is
+      // drawn again for an event or for a new status line (e.g. "autosaved").
+      SDL_Event e;
+      bool event = false;
+      while (!quit_ && !(event = SDL_WaitEventTimeout(&e, kIdleWakeMs) != 0)) {
+        const std::string before = status_;
+        autosave_if_due();
+        if (status_ != before) break;
+      }
+      if (event) {
+        frames_since_input_ = 0;
+        dispatch(e);
+        while (SDL_PollEvent(&e)) dispatch(e);
+      }
+      next_frame_s = monotonic_s();
+      continue;
+    }
     next_frame_s += kFramePeriodS;
     double now = monotonic_s();
     if (next_frame_s < now) next_frame_s = now + kFramePeriodS;
@@ -149,6 +173,7 @@ int EditorApp::run() {
       SDL_Event e;
       const int wait_ms = std::max(1, static_cast<int>((next_frame_s - now) * 1000.0));
       if (SDL_WaitEventTimeout(&e, wait_ms)) {
+        frames_since_input_ = 0;
         dispatch(e);
         while (SDL_PollEvent(&e)) dispatch(e);
       }

@@ -107,6 +107,7 @@ class EditorApp {
   RectMm resize_from_;
   int resize_handle_ = -1;    // 0..7 clockwise from top-left
   std::vector<Point2Mm> polygon_points_;
+  int frames_since_input_ = 0;  // frames drawn since the last event (idle when > kSettleFrames)
   std::vector<Point2Px> outline_px_, outline_lod_px_;  // scratch for drawing outlines, reused every frame
   float canvas_x_ = 0, canvas_y_ = 0, canvas_w_ = 0, canvas_h_ = 0;  // the canvas region, px
   bool canvas_placed_ = false;
