@@ -24,12 +24,12 @@ done
 echo "== frame time, the smiley (4 primitives)"
 "$editor" "$here/../../assets/examples/smiley.vimg" --output none --recovery-dir "$out/rec" --benchmark-frames 300 | grep benchmark
 
-echo "== idle CPU: the smiley open, no input, 10 s after a 3 s settle (share of one core)"
+echo "== idle CPU: the smiley open, no input, 5 s after a 3 s settle (share of one core)"
 "$editor" "$here/../../assets/examples/smiley.vimg" --output none --recovery-dir "$out/rec" >/dev/null 2>&1 &
 pid=$!
 sleep 3
 t0=$(awk '{print $14 + $15}' "/proc/$pid/stat"); s0=$(date +%s.%N)
-sleep 10
+sleep 5
 t1=$(awk '{print $14 + $15}' "/proc/$pid/stat"); s1=$(date +%s.%N)
 kill "$pid"; wait "$pid" 2>/dev/null || true
 awk -v a="$t0" -v b="$t1" -v s0="$s0" -v s1="$s1" -v hz="$(getconf CLK_TCK)" \
