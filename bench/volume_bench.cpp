@@ -1,12 +1,15 @@
 // Volume backend: the cost of one haptic cycle with every shader over a 256^3 scalar volume and
-// a 128^3 vector volume (goal <= 20 us, 2 % of a 1 kHz cycle), and the haptic loop's jitter.
+// a 128^3 vector volume (goal <= 20 us, 2 % of a 1 kHz cycle), the safety stack, and the force
+// loop holding 1 kHz and 4 kHz (rate, lateness, overruns) with and without SCHED_FIFO.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <thread>
 
 #include "hal/force/simulated_force_device.hpp"
+#include "player/haptic/force_log.hpp"
 #include "player/haptic/haptic_loop.hpp"
 #include "primitives/cues/roughness_shader.hpp"
 #include "primitives/cues/transition_cue_shader.hpp"
@@ -71,7 +74,7 @@ void BM_HapticCycleEveryShader(benchmark::State& state) {
   static const auto s = scalar_volume(256);
   static const auto v = vector_volume(128);
   auto scene = every_shader_scene(s, v);
-  HapticCycle cycle({3.3, 1e9, 0.0, 0.1});
+  HapticCycle cycle({0.1});
   cycle.set_scene(scene.get(), 0.0);
   ProbeSample probe;
   double t = 0.0;
@@ -85,27 +88,60 @@ void BM_HapticCycleEveryShader(benchmark::State& state) {
 }
 BENCHMARK(BM_HapticCycleEveryShader)->Unit(benchmark::kMicrosecond);
 
-// Loop lateness against its absolute deadlines over 3 s with the simulated device, at normal
-// priority and with SCHED_FIFO when the system grants it.
-void BM_HapticLoopJitter(benchmark::State& state) {
+// The safety stack alone (gate, wall, clamp, slew, watchdogs) on a force that keeps it busy.
+void BM_SafetyStack(benchmark::State& state) {
+  SafetySettings settings;
+  settings.gate_force_N = 1e9;
+  SafetyStack stack(settings, ForceDeviceLimits{}, 1e-3);
+  SafetyInput in;
+  for (auto _ : state) {
+    in.time_s += 1e-3;
+    ++in.sequence;
+    in.scene_N = {4.0 * std::sin(40.0 * in.time_s), 2.0, -1.0};
+    in.position_m = {0.075 * std::sin(3.0 * in.time_s), 0.0, 0.0};
+    benchmark::DoNotOptimize(stack.apply(in));
+  }
+}
+BENCHMARK(BM_SafetyStack)->Unit(benchmark::kNanosecond);
+
+// The force loop as vimg-force runs it: the simulated device, the every-shader scene over 64^3
+// volumes, the safety stack with its default watchdogs, the per-cycle log drained to a file by
+// the writer thread; 3 s at the given rate, at normal priority or asking for SCHED_FIFO. The
+// label says what scheduling the loop got (a refused SCHED_FIFO says so).
+void BM_ForceLoop(benchmark::State& state) {
   const double rate = static_cast<double>(state.range(0));
+  const int priority = static_cast<int>(state.range(1));
   for (auto _ : state) {
     SimulatedForceDevice device(std::vector<HandPathPoint>{{0.0, Vec3{}}, {3.0, Vec3{0.05, 0.0, 0.0}}});
-    HapticLoop loop(device, {rate, {3.3, 0.2, 0.1, 0.1}, static_cast<int>(state.range(1))});
+    HapticLoopConfig config;
+    config.rate_hz = rate;
+    config.realtime_priority = priority;
+    config.log_capacity_rows = static_cast<std::size_t>(rate);
+    HapticLoop loop(device, config);
     loop.submit_scene(every_shader_scene(scalar_volume(64), vector_volume(64)));
+    // Never committed: the temporary file is removed when the writer goes.
+    ForceLogWriter log(loop, std::filesystem::temp_directory_path() / "volume_bench_force_log.csv");
+    log.start();
     loop.start();
-    std::this_thread::sleep_for(std::chrono::seconds(3));
+    for (int i = 0; i < 300 && loop.running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
     loop.stop();
-    const JitterStats j = loop.jitter();
-    state.counters["cycles"] = static_cast<double>(j.cycles);
-    state.counters["p50_us"] = j.p50_us;
-    state.counters["p99_us"] = j.p99_us;
-    state.counters["max_us"] = j.max_us;
-    state.counters["fifo"] = loop.realtime() ? 1.0 : 0.0;
+    const LoopTimingStats t = loop.timing();
+    state.counters["rate_hz"] = t.rate_hz;
+    state.counters["target_hz"] = rate;
+    state.counters["p50_us"] = t.jitter_p50_us;
+    state.counters["p99_us"] = t.jitter_p99_us;
+    state.counters["max_us"] = t.jitter_max_us;
+    state.counters["overruns"] = static_cast<double>(t.overruns);
+    state.counters["skips"] = static_cast<double>(t.skips);
+    state.counters["cycles"] = static_cast<double>(t.cycles);
+    state.counters["fifo"] = loop.realtime_priority().granted ? 1.0 : 0.0;
+    state.counters["faulted"] = loop.failed() ? 1.0 : 0.0;
+    state.counters["log_dropped"] = static_cast<double>(loop.log_rows_dropped());
+    state.SetLabel(describe(loop.realtime_priority()) + (loop.failed() ? "; " + loop.fault_text() : ""));
   }
 }
 // Args: rate (Hz), SCHED_FIFO priority (0: normal scheduling).
-BENCHMARK(BM_HapticLoopJitter)->Args({1000, 0})->Args({4000, 0})->Args({1000, 80})->Args({4000, 80})->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ForceLoop)->Args({1000, 0})->Args({4000, 0})->Args({1000, 80})->Args({4000, 80})->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace vimg

@@ -41,15 +41,26 @@ bool HidForceDevice::read(double time_s, ProbeSample& sample) {
   // Take every queued report and keep the newest; wait a little only if none has ever come.
   for (int i = 0; i < 64; ++i) {
     const int n = transport_->read(buffer, (!have_state_ && !got) ? 20 : 0);
-    if (n < 0) return false;
+    if (n < 0) {
+      fault_ = PortFault::io_error;
+      return false;
+    }
     if (n == 0) break;
     if (const auto s = hid_force::decode_state(std::span<const std::uint8_t>(buffer.data(), static_cast<std::size_t>(n)))) {
+      // The device's sequence byte, unwrapped: a repeated report is no new measurement.
+      measurements_ += (have_state_ || got) ? static_cast<std::uint8_t>(s->sequence - state_.sequence) : 1u;
       state_ = *s;
       got = true;
     }
   }
-  if (!got && !have_state_) return false;
-  if ((state_.status & 2) != 0) return false;  // device fault
+  if (!got && !have_state_) {
+    fault_ = PortFault::no_data;
+    return false;
+  }
+  if ((state_.status & 2) != 0) {
+    fault_ = PortFault::device_fault;
+    return false;
+  }
   if (got) {
     if (have_state_ && time_s > last_time_s_) {
       const double dt = time_s - last_time_s_;
@@ -64,12 +75,15 @@ bool HidForceDevice::read(double time_s, ProbeSample& sample) {
   sample.position_m = state_.position_m;
   sample.velocity_m_per_s = velocity_m_per_s_;
   sample.buttons = state_.buttons;
+  sample.sequence = measurements_;
   return true;
 }
 
 bool HidForceDevice::send(const Vec3& force_N, bool enable) {
   const auto report = hid_force::encode_force({sequence_++, enable, clamp_magnitude(force_N, info_.limits.max_force_N)});
-  return transport_->write(report) == static_cast<int>(report.size());
+  if (transport_->write(report) == static_cast<int>(report.size())) return true;
+  fault_ = PortFault::io_error;
+  return false;
 }
 
 bool HidForceDevice::write_force(const Vec3& force_N) { return send(force_N, true); }

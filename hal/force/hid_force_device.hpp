@@ -1,7 +1,13 @@
 #pragma once
 // A force device speaking the open HID force protocol (hid_force_protocol.hpp) over a
 // HidTransport. Velocity is estimated from successive positions with a first-order low-pass
-// (cut-off velocity_cutoff_hz). Closing sends a zero force with enable cleared.
+// (cut-off velocity_cutoff_hz). ProbeSample::sequence counts the state reports by their own
+// sequence byte (unwrapped), so a device that stops reporting leaves it unchanged. Closing sends a
+// zero force with enable cleared.
+//
+// Threads: open() and the destructor on a control thread (open allocates and formats messages);
+// read(), write_force() and last_fault() on the loop thread: they neither allocate nor throw, and
+// report errors as a PortFault code, which the control thread turns into text.
 #include <memory>
 #include <string>
 
@@ -21,6 +27,7 @@ class HidForceDevice final : public ForceDevice {
   bool read(double time_s, ProbeSample& sample) override;
   bool write_force(const Vec3& force_N) override;
   ForceDeviceLimits limits() const override { return info_.limits; }
+  PortFault last_fault() const noexcept override { return fault_; }
   const hid_force::DeviceInfo& info() const { return info_; }
   // Disables the force output (zero force, enable clear) until the next write_force.
   bool disable();
@@ -39,6 +46,8 @@ class HidForceDevice final : public ForceDevice {
   Vec3 last_position_m_;
   double last_time_s_ = 0.0;
   std::uint8_t sequence_ = 0;
+  std::uint64_t measurements_ = 0;
+  PortFault fault_ = PortFault::none;
 };
 
 }  // namespace vimg

@@ -33,7 +33,7 @@ int HidForceEmulator::read(std::span<std::uint8_t> buffer, int) {
 }
 
 int HidForceEmulator::get_feature_report(std::span<std::uint8_t> buffer) {
-  if (unplugged_) return -1;
+  if (unplugged_ || !answers_info_) return -1;
   if (buffer.empty() || buffer[0] != hid_force::kInfoReportId) return -1;
   const auto report = hid_force::encode_info(info_);
   const std::size_t n = std::min(buffer.size(), report.size());
@@ -57,6 +57,37 @@ void HidForceEmulator::advance_s(double dt_s) {
     force_N_ = {};
     enabled_ = false;
   }
+}
+
+void HidForceEmulatorHost::add_force_device(HidCandidate candidate, hid_force::DeviceInfo info) {
+  entries_.push_back({std::move(candidate), Kind::force, info});
+}
+
+void HidForceEmulatorHost::add_other_device(HidCandidate candidate) { entries_.push_back({std::move(candidate), Kind::other, {}}); }
+
+void HidForceEmulatorHost::add_locked_device(HidCandidate candidate) { entries_.push_back({std::move(candidate), Kind::locked, {}}); }
+
+std::vector<HidCandidate> HidForceEmulatorHost::enumerate() {
+  std::vector<HidCandidate> list;
+  for (const Entry& e : entries_) list.push_back(e.candidate);
+  return list;
+}
+
+std::unique_ptr<HidTransport> HidForceEmulatorHost::open(const std::string& path, std::string& error) {
+  for (const Entry& e : entries_) {
+    if (e.candidate.path != path) continue;
+    ++opens_;
+    if (e.kind == Kind::locked) {
+      error = "cannot open " + path + ": no read/write permission (see the udev rule in docs/volume.md)";
+      return nullptr;
+    }
+    auto device = std::make_unique<HidForceEmulator>(e.info);
+    if (e.kind == Kind::other) device->set_answers_info(false);
+    device->emit_state();  // a real device reports at its rate from the start
+    return device;
+  }
+  error = "cannot open " + path + ": No such file or directory";
+  return nullptr;
 }
 
 }  // namespace vimg

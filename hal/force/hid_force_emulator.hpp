@@ -2,6 +2,8 @@
 // An emulated do-it-yourself force device speaking the open HID force protocol, as a
 // HidTransport: tests drive the probe position and the device clock, and check what force the
 // device would render, including the 50 ms watchdog and the enable flag.
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "hal/force/hid_force_protocol.hpp"
@@ -34,6 +36,8 @@ class HidForceEmulator final : public HidTransport {
   const std::vector<hid_force::ForceReport>& received() const { return received_; }
   // Test hook: the next transport call fails as if the device were unplugged.
   void unplug() { unplugged_ = true; }
+  // Test hook: a HID device of another kind (a keyboard, a mouse) answers no info report 0x01.
+  void set_answers_info(bool answers) { answers_info_ = answers; }
 
  private:
   hid_force::DeviceInfo info_;
@@ -49,6 +53,31 @@ class HidForceEmulator final : public HidTransport {
   int malformed_ = 0;
   std::vector<hid_force::ForceReport> received_;
   bool unplugged_ = false;
+  bool answers_info_ = true;
+};
+
+// A host with emulated HID devices, for the device search (find_hid_force_device): force devices
+// (a HidForceEmulator each time one is opened), devices of other kinds, and devices this user may
+// not open.
+class HidForceEmulatorHost final : public HidTransportHost {
+ public:
+  void add_force_device(HidCandidate candidate, hid_force::DeviceInfo info = {});
+  void add_other_device(HidCandidate candidate);
+  void add_locked_device(HidCandidate candidate);
+
+  std::vector<HidCandidate> enumerate() override;
+  std::unique_ptr<HidTransport> open(const std::string& path, std::string& error) override;
+  int opens() const { return opens_; }
+
+ private:
+  enum class Kind { force, other, locked };
+  struct Entry {
+    HidCandidate candidate;
+    Kind kind;
+    hid_force::DeviceInfo info;
+  };
+  std::vector<Entry> entries_;
+  int opens_ = 0;
 };
 
 }  // namespace vimg

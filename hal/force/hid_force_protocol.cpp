@@ -45,6 +45,8 @@ std::array<std::uint8_t, kInfoReportSize> encode_info(const DeviceInfo& info) {
   put_u16(&r[10], to_u16(info.limits.workspace_m.z * 1e3));
   put_u16(&r[12], info.report_rate_hz);
   r[14] = info.button_count;
+  const double slew_units = info.limits.max_slew_N_per_ms / kSlewUnit_N_per_ms;
+  r[15] = std::isfinite(slew_units) ? static_cast<std::uint8_t>(std::clamp(std::lround(slew_units), 1L, 255L)) : 0;
   return r;
 }
 
@@ -57,6 +59,7 @@ std::optional<DeviceInfo> decode_info(std::span<const std::uint8_t> r) {
   info.limits.workspace_m = Vec3{double(get_u16(&r[6])), double(get_u16(&r[8])), double(get_u16(&r[10]))} * 1e-3;
   info.report_rate_hz = get_u16(&r[12]);
   info.button_count = r[14];
+  info.limits.max_slew_N_per_ms = r[15] == 0 ? kDefaultMaxSlew_N_per_ms : r[15] * kSlewUnit_N_per_ms;
   return info;
 }
 

@@ -5,7 +5,10 @@
 //   Feature report 0x01, device info (16 bytes, device -> host, read once at open):
 //     [1] protocol version (1)  [2..3] Fmax, mN (u16)  [4..5] Kmax, N/m (u16)
 //     [6..7] [8..9] [10..11] workspace x, y, z, mm (u16)  [12..13] state report rate, Hz (u16)
-//     [14] number of buttons  [15] reserved, 0
+//     [14] number of buttons  [15] slew limit, 0.1 N/ms units (u8): the largest force change the
+//     device accepts per millisecond; 0 means the default, kDefaultMaxSlew_N_per_ms (1 N/ms).
+//     Byte 15 was "reserved, 0" before it carried the slew limit, so older devices decode to the
+//     default. encode_info rounds to the nearest 0.1 N/ms within 0.1 .. 25.5 N/ms.
 //   Input report 0x02, state (16 bytes, device -> host, at the report rate, 1 kHz nominal):
 //     [1] sequence (u8, wraps)  [2] buttons (bit i = button i)  [3] status (bit 0 force enabled,
 //     bit 1 fault)  [4..7] [8..11] [12..15] position x, y, z, micrometres (i32)
@@ -31,6 +34,7 @@ inline constexpr std::size_t kInfoReportSize = 16;
 inline constexpr std::size_t kStateReportSize = 16;
 inline constexpr std::size_t kForceReportSize = 9;
 inline constexpr double kWatchdogTimeout_s = 0.05;
+inline constexpr double kSlewUnit_N_per_ms = 0.1;  // info report byte 15
 
 struct DeviceInfo {
   std::uint8_t version = kProtocolVersion;

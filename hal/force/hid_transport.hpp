@@ -5,6 +5,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace vimg {
 
@@ -20,6 +21,25 @@ class HidTransport {
   virtual int get_feature_report(std::span<std::uint8_t> buffer) = 0;
 };
 
+// A HID device the host can see.
+struct HidCandidate {
+  std::string path;  // e.g. /dev/hidraw3
+  std::uint16_t vendor_id = 0;
+  std::uint16_t product_id = 0;
+  std::string product;  // the product string, UTF-8 ("" when the device gives none)
+};
+
+// Finding and opening HID devices: hidapi in production (HidapiTransportHost), an emulated set
+// of devices in tests (HidForceEmulatorHost). Control thread only (allocates).
+class HidTransportHost {
+ public:
+  virtual ~HidTransportHost() = default;
+  // Every visible HID device, each path once.
+  virtual std::vector<HidCandidate> enumerate() = 0;
+  // Null with a reason when the device cannot be opened.
+  virtual std::unique_ptr<HidTransport> open(const std::string& path, std::string& error) = 0;
+};
+
 // hidapi (hidraw backend). Opens the first device with the ids, or a given hidraw path.
 class HidapiTransport final : public HidTransport {
  public:
@@ -33,6 +53,17 @@ class HidapiTransport final : public HidTransport {
  private:
   explicit HidapiTransport(void* device) : device_(device) {}
   void* device_;  // hid_device*
+};
+
+}  // namespace vimg
+
+namespace vimg {
+
+// hid_enumerate(0, 0) and hid_open_path.
+class HidapiTransportHost final : public HidTransportHost {
+ public:
+  std::vector<HidCandidate> enumerate() override;
+  std::unique_ptr<HidTransport> open(const std::string& path, std::string& error) override;
 };
 
 }  // namespace vimg

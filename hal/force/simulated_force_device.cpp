@@ -29,7 +29,7 @@ Vec3 SimulatedForceDevice::hand_position_m(double time_s) const {
 bool SimulatedForceDevice::read(double time_s, ProbeSample& sample) {
   if (fail_read_.exchange(false)) return false;
   const double span = time_s - time_s_;
-  if (span > 0.0) {
+  if (span > 0.0 && !frozen_.load(std::memory_order_relaxed)) {
     const int steps = std::max(1, static_cast<int>(std::ceil(span / hand_.max_substep_s)));
     const double h = span / steps;
     for (int n = 0; n < steps; ++n) {
@@ -45,10 +45,12 @@ bool SimulatedForceDevice::read(double time_s, ProbeSample& sample) {
       position_m_ += step;
     }
     time_s_ = time_s;
+    ++sequence_;
   }
   sample.position_m = position_m_;
   sample.velocity_m_per_s = velocity_m_per_s_;
   sample.buttons = 0;
+  sample.sequence = sequence_;
   return true;
 }
 

@@ -3,7 +3,8 @@
 // path through a spring-damper (k_h, b_h), with viscous friction b_dev in the device. The force
 // last written acts on the probe until the next one (zero-order hold, like a real device).
 //   m x'' = k_h (h(t) - x) + b_h (h'(t) - x') - b_dev x' + F
-// read(time_s) integrates up to time_s in sub-steps (semi-implicit Euler). It also accounts the
+// read(time_s) integrates up to time_s in sub-steps (semi-implicit Euler); every read that
+// advances the device's time is a new measurement (ProbeSample::sequence counts up). It also accounts the
 // work the rendered force does on the probe, W = integral F . dx: a passive virtual environment
 // never delivers net energy, so W stays <= 0 (up to what it stores and gives back).
 #include <atomic>
@@ -42,6 +43,8 @@ class SimulatedForceDevice final : public ForceDevice {
   void fail_next_read() { fail_read_ = true; }
   void fail_next_write() { fail_write_ = true; }
   int writes() const { return writes_; }
+  // Test hook: the device stops measuring (reads succeed, the sequence stays put) until resumed.
+  void freeze_measurements(bool frozen) { frozen_ = frozen; }
 
  private:
   std::vector<HandPathPoint> path_;
@@ -54,7 +57,9 @@ class SimulatedForceDevice final : public ForceDevice {
   double work_J_ = 0.0;
   std::atomic<bool> fail_read_{false};
   std::atomic<bool> fail_write_{false};
+  std::atomic<bool> frozen_{false};
   int writes_ = 0;
+  std::uint64_t sequence_ = 0;
 };
 
 }  // namespace vimg

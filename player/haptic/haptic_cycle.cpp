@@ -55,17 +55,7 @@ CycleOutput HapticCycle::step(const ProbeSample& probe, double time_s) {
   } else {
     sum.add(current_total);
   }
-  out.total_N = sum.clamped_N(config_.max_force_N);
-
-  if (gated_ && norm(out.total_N) < config_.gate_force_N) {
-    gated_ = false;
-    ramp_start_s_ = time_s;
-  }
-  out.gated = gated_;
-  if (!gated_) {
-    const double ramp = config_.ramp_time_s > 0.0 ? std::clamp((time_s - ramp_start_s_) / config_.ramp_time_s, 0.0, 1.0) : 1.0;
-    out.sent_N = ramp * out.total_N;
-  }
+  out.total_N = sum.unclamped_N();
   return out;
 }
 

@@ -1,29 +1,39 @@
 #include "player/haptic/haptic_loop.hpp"
 
-#include "realtime/clock.hpp"
-
-#include <pthread.h>
-#include <sched.h>
-#include <time.h>
-
 #include <algorithm>
-#include <cerrno>
+#include <cmath>
+
+#include "realtime/clock.hpp"
 
 namespace vimg {
 
-HapticLoop::HapticLoop(HapticPort& port, HapticLoopConfig config)
-    : port_(port), config_(config), cycle_(config.cycle), histogram_(kHistogramBins + 1, 0) {
-  config_.cycle.max_force_N = std::min(config_.cycle.max_force_N, port.max_force_N());
-  cycle_ = HapticCycle(config_.cycle);
+const char* describe(LoopState state) noexcept {
+  switch (state) {
+    case LoopState::idle: return "idle";
+    case LoopState::running: return "running";
+    case LoopState::stopped: return "stopped";
+    case LoopState::faulted: return "fault";
+  }
+  return "unknown";
 }
 
-// owned_ is the one owner of every scene, the pending one included: the atomic pointers only lend.
+HapticLoop::HapticLoop(HapticPort& port, HapticLoopConfig config)
+    : port_(port),
+      config_(config),
+      cycle_(port.limits(), config.safety, HapticCycleConfig{config.crossfade_time_s},
+             config.rate_hz > 0.0 ? 1.0 / config.rate_hz : 1e-3) {
+  if (config_.log_capacity_rows > 0) log_ = std::make_unique<SpscRing<ForceCycleRecord>>(config_.log_capacity_rows);
+}
+
+// owned_ is the one owner of every scene, the pending one included: the atomic slots only lend.
 HapticLoop::~HapticLoop() { stop(); }
 
+void HapticLoop::forget(HapticScene* scene) {
+  owned_.erase(std::remove_if(owned_.begin(), owned_.end(), [&](const auto& p) { return p.get() == scene; }), owned_.end());
+}
+
 void HapticLoop::release_retired() {
-  if (HapticScene* r = retired_.exchange(nullptr)) {
-    owned_.erase(std::remove_if(owned_.begin(), owned_.end(), [&](const auto& p) { return p.get() == r; }), owned_.end());
-  }
+  if (HapticScene* r = retired_.exchange(nullptr)) forget(r);
 }
 
 void HapticLoop::submit_scene(std::unique_ptr<HapticScene> scene) {
@@ -31,16 +41,23 @@ void HapticLoop::submit_scene(std::unique_ptr<HapticScene> scene) {
   HapticScene* raw = scene.get();
   owned_.push_back(std::move(scene));
   // A scene the loop never took is replaced: it can go at once.
-  if (HapticScene* unseen = pending_.exchange(raw)) {
-    owned_.erase(std::remove_if(owned_.begin(), owned_.end(), [&](const auto& p) { return p.get() == unseen; }), owned_.end());
-  }
+  if (HapticScene* unseen = pending_.exchange(raw)) forget(unseen);
 }
 
 bool HapticLoop::start() {
-  if (running_.load() || thread_.joinable() || !(config_.rate_hz >= 100.0 && config_.rate_hz <= 4000.0)) return false;
+  if (thread_.joinable() || !(config_.rate_hz >= 100.0 && config_.rate_hz <= 4000.0)) return false;
+  // No loop thread runs: everything the loop writes can be reset here.
+  telemetry_.reset();
+  cycle_.reset();
   stop_requested_ = false;
-  failed_ = false;
-  running_ = true;
+  fault_ = ForceFault::none;
+  port_fault_ = PortFault::none;
+  cycles_ = 0;
+  flags_ = 0;
+  max_force_N_ = 0.0;
+  clamp_hits_ = 0;
+  log_dropped_ = 0;
+  state_.store(LoopState::running, std::memory_order_release);
   thread_ = std::thread([this] { run(); });
   return true;
 }
@@ -48,81 +65,129 @@ bool HapticLoop::start() {
 void HapticLoop::stop() {
   stop_requested_ = true;
   if (thread_.joinable()) thread_.join();
-  running_ = false;
+  LoopState running = LoopState::running;
+  state_.compare_exchange_strong(running, LoopState::stopped);
   release_retired();
 }
 
-Vec3 HapticLoop::last_sent_N() const { return {sent_x_.load(), sent_y_.load(), sent_z_.load()}; }
+Vec3 HapticLoop::last_sent_N() const {
+  return {sent_x_.load(std::memory_order_relaxed), sent_y_.load(std::memory_order_relaxed), sent_z_.load(std::memory_order_relaxed)};
+}
+
+Vec3 HapticLoop::last_position_m() const {
+  return {probe_x_.load(std::memory_order_relaxed), probe_y_.load(std::memory_order_relaxed), probe_z_.load(std::memory_order_relaxed)};
+}
+
+RealtimePriority HapticLoop::realtime_priority() const {
+  RealtimePriority p;
+  p.requested = priority_requested_.load(std::memory_order_acquire);
+  p.granted = priority_granted_.load(std::memory_order_acquire);
+  p.error_number = priority_errno_.load(std::memory_order_acquire);
+  return p;
+}
+
+HapticLoopStatus HapticLoop::status() const {
+  HapticLoopStatus s;
+  s.state = state();
+  s.fault = fault();
+  s.port_fault = port_fault();
+  s.cycles = cycles();
+  s.position_m = last_position_m();
+  s.force_N = last_sent_N();
+  s.flags = last_flags();
+  s.max_force_N = max_sent_N();
+  s.clamp_hits = clamp_hits();
+  s.log_rows_dropped = log_rows_dropped();
+  s.timing = timing();
+  return s;
+}
+
+std::string HapticLoop::fault_text() const {
+  switch (fault()) {
+    case ForceFault::none: return {};
+    case ForceFault::device_read: return std::string("device read failed: ") + describe(port_fault());
+    case ForceFault::device_write: return std::string("device write failed: ") + describe(port_fault());
+    case ForceFault::stale_input:
+      return "stale input: the device sent no new probe position for " + std::to_string(safety().stale_limit_cycles()) +
+             " cycles";
+    case ForceFault::overruns:
+      return std::to_string(safety().overrun_limit_cycles()) +
+             " overruns in a row: the cycle's work did not finish before the next deadline";
+  }
+  return "unknown fault";
+}
+
+std::size_t HapticLoop::take_log_rows(std::span<ForceCycleRecord> out) { return log_ ? log_->pop_some(out) : 0; }
+
+void HapticLoop::publish(const ForceCycleRecord& r, bool last) {
+  sent_x_.store(r.force_N.x, std::memory_order_relaxed);
+  sent_y_.store(r.force_N.y, std::memory_order_relaxed);
+  sent_z_.store(r.force_N.z, std::memory_order_relaxed);
+  probe_x_.store(r.position_m.x, std::memory_order_relaxed);
+  probe_y_.store(r.position_m.y, std::memory_order_relaxed);
+  probe_z_.store(r.position_m.z, std::memory_order_relaxed);
+  flags_.store(r.flags, std::memory_order_relaxed);
+  const double magnitude = norm(r.force_N);
+  if (magnitude > max_force_N_.load(std::memory_order_relaxed)) max_force_N_.store(magnitude, std::memory_order_relaxed);
+  if ((r.flags & safety_flag::clamp) != 0) clamp_hits_.fetch_add(1, std::memory_order_relaxed);
+  if (log_) {
+    // Ordinary rows leave one slot free, so that the last row always fits.
+    const bool room = last ? log_->push(r) : (log_->size() + 1 < log_->capacity() && log_->push(r));
+    if (!room) log_dropped_.fetch_add(1, std::memory_order_relaxed);
+  }
+  cycles_.fetch_add(1, std::memory_order_release);
+}
 
 void HapticLoop::run() {
-  if (config_.realtime_priority > 0) {
-    sched_param param{};
-    param.sched_priority = std::min(config_.realtime_priority, 99);
-    realtime_ = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0;
-  }
-  const auto period_ns = static_cast<std::int64_t>(1e9 / config_.rate_hz);
+  const RealtimePriority priority = request_realtime_priority(config_.realtime_priority);
+  priority_requested_.store(priority.requested, std::memory_order_release);
+  priority_granted_.store(priority.granted, std::memory_order_release);
+  priority_errno_.store(priority.error_number, std::memory_order_release);
+
+  const auto period_ns = static_cast<std::int64_t>(std::llround(1e9 / config_.rate_hz));
   const std::int64_t start_ns = monotonic_ns();
   std::int64_t deadline_ns = start_ns;
-  ProbeSample probe;
-  while (!stop_requested_.load(std::memory_order_relaxed)) {
+  bool overran = false;
+  for (;;) {
     deadline_ns += period_ns;
     sleep_until_ns(deadline_ns);
     const std::int64_t woke_ns = monotonic_ns();
-    const double late_us = static_cast<double>(std::max<std::int64_t>(0, woke_ns - deadline_ns)) * 1e-3;
-    ++histogram_[std::min<std::size_t>(static_cast<std::size_t>(late_us), kHistogramBins)];
-    max_late_us_ = std::max(max_late_us_, late_us);
-    if (woke_ns - deadline_ns > 10 * period_ns) deadline_ns = woke_ns;  // far behind: skip, never burst
-
+    telemetry_.record_wake(woke_ns, deadline_ns);
+    if (woke_ns - deadline_ns >= period_ns) {
+      // A period or more behind: run this cycle at the latest deadline passed, never burst.
+      deadline_ns += (woke_ns - deadline_ns) / period_ns * period_ns;
+      telemetry_.record_skip();
+    }
     const double time_s = static_cast<double>(deadline_ns - start_ns) * 1e-9;
+
     // A faded-out scene goes back to the owner; while the slot is full it waits here, and no
     // new scene is taken, so at most three scenes are ever in play.
-    if (!unreturned_) unreturned_ = cycle_.take_retired();
+    if (!unreturned_) unreturned_ = cycle_.render().take_retired();
     if (unreturned_) {
       HapticScene* empty = nullptr;
       if (retired_.compare_exchange_strong(empty, unreturned_)) unreturned_ = nullptr;
     }
-    if (!cycle_.fading() && !unreturned_) {
-      if (HapticScene* next = pending_.exchange(nullptr)) cycle_.set_scene(next, time_s);
+    if (!cycle_.render().fading() && !unreturned_) {
+      if (HapticScene* next = pending_.exchange(nullptr)) cycle_.render().set_scene(next, time_s);
     }
-    if (!port_.read(time_s, probe)) {
-      failed_ = true;
-      break;
-    }
-    const CycleOutput out = cycle_.step(probe, time_s);
-    if (!port_.write_force(out.sent_N)) {
-      failed_ = true;
-      break;
-    }
-    sent_x_.store(out.sent_N.x, std::memory_order_relaxed);
-    sent_y_.store(out.sent_N.y, std::memory_order_relaxed);
-    sent_z_.store(out.sent_N.z, std::memory_order_relaxed);
-    cycles_.fetch_add(1, std::memory_order_relaxed);
-  }
-  // Zero force first, on stop and on error alike.
-  port_.write_force({});
-  sent_x_ = sent_y_ = sent_z_ = 0.0;
-  running_ = false;
-}
 
-JitterStats HapticLoop::jitter() const {
-  JitterStats stats;
-  std::uint64_t total = 0;
-  for (auto n : histogram_) total += n;
-  stats.cycles = total;
-  stats.max_us = max_late_us_;
-  if (total == 0) return stats;
-  auto percentile = [&](double q) {
-    const auto target = static_cast<std::uint64_t>(q * static_cast<double>(total - 1));
-    std::uint64_t seen = 0;
-    for (std::size_t i = 0; i < histogram_.size(); ++i) {
-      seen += histogram_[i];
-      if (seen > target) return static_cast<double>(i);
+    if (stop_requested_.load(std::memory_order_acquire)) {
+      publish(cycle_.stop(port_, time_s), true);
+      state_.store(LoopState::stopped, std::memory_order_release);
+      return;
     }
-    return static_cast<double>(kHistogramBins);
-  };
-  stats.p50_us = percentile(0.50);
-  stats.p99_us = percentile(0.99);
-  return stats;
+    const ForceCycleRecord record = cycle_.step(port_, time_s, overran);
+    if (record.fault != ForceFault::none) {
+      port_fault_.store(record.port_fault, std::memory_order_release);
+      fault_.store(record.fault, std::memory_order_release);
+      publish(record, true);
+      state_.store(LoopState::faulted, std::memory_order_release);
+      return;
+    }
+    publish(record, false);
+    overran = monotonic_ns() > deadline_ns + period_ns;
+    if (overran) telemetry_.record_overrun();
+  }
 }
 
 }  // namespace vimg

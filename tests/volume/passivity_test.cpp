@@ -1,12 +1,12 @@
-// The coupled system (simulated device and hand, haptic cycle at 1 kHz, kinaesthetic scene)
-// must not gain energy: the work the rendered force does on the probe, W = integral F . dx, never
+// The coupled system (simulated device and hand, the loop's whole cycle at 1 kHz: render and
+// safety stack, kinaesthetic scene) must not gain energy: the work the rendered force does on the probe, W = integral F . dx, never
 // exceeds a small tolerance over 10 s of pushing into, along and out of the data.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "hal/force/simulated_force_device.hpp"
-#include "player/haptic/haptic_cycle.hpp"
+#include "player/haptic/safe_haptic_cycle.hpp"
 #include "primitives/kinaesthetic/vector_guidance.hpp"
 #include "primitives/kinaesthetic/yielding_surface.hpp"
 #include "tests/volume/analytic_fields.hpp"
@@ -33,14 +33,15 @@ struct EnergyRun {
 EnergyRun run(std::shared_ptr<const ForceShader> shader) {
   SimulatedForceDevice device(pushing_path());
   HapticScene scene(DeviceProfile{}, {}, {std::move(shader)}, {});
-  HapticCycle cycle({3.3, 1e9, 0.0, 0.1});
-  cycle.set_scene(&scene, 0.0);
+  SafetySettings safety;
+  safety.gate_force_N = 1e9;  // no start-up gate: the scene's force from the first cycle
+  safety.ramp_time_s = 0.0;
+  SafeHapticCycle cycle(device.limits(), safety, {0.1}, 1e-3);
+  cycle.render().set_scene(&scene, 0.0);
   EnergyRun r;
-  ProbeSample probe;
   for (int i = 0; i <= 10000; ++i) {
     const double t = i * 1e-3;
-    EXPECT_TRUE(device.read(t, probe));
-    device.write_force(cycle.step(probe, t).sent_N);
+    EXPECT_EQ(cycle.step(device, t, false).fault, ForceFault::none);
     r.max_work_J = std::max(r.max_work_J, device.environment_work_J());
   }
   r.final_work_J = device.environment_work_J();
