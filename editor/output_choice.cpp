@@ -24,6 +24,8 @@ class HalOutputSink final : public DriveSink {
     output_->sink().write(drive, block_start_time_s);
   }
   void close() override { output_->sink().close(); }
+  bool paces_stream() const override { return output_->sink().paces_stream(); }
+  std::size_t min_block_samples() const override { return output_->sink().min_block_samples(); }
 
  private:
   std::unique_ptr<Output> output_;

@@ -11,8 +11,8 @@ constexpr int kMaxFingers = 10;
 constexpr std::size_t kMaxTrail = 4096;
 }  // namespace
 
-PlaySession::PlaySession(OutputFactory make_output, double sample_rate_hz)
-    : make_output_(std::move(make_output)), sample_rate_hz_(sample_rate_hz) {
+PlaySession::PlaySession(OutputFactory make_output, double sample_rate_hz, int realtime_priority)
+    : make_output_(std::move(make_output)), sample_rate_hz_(sample_rate_hz), realtime_priority_(realtime_priority) {
   fingers_.resize(kMaxFingers);
 }
 
@@ -29,8 +29,9 @@ std::optional<std::string> PlaySession::start(const Image& image) {
   tap_ = std::make_unique<DriveTap>(*output_);
   RealtimeOptions options;
   options.sample_rate_hz = sample_rate_hz_;
+  options.realtime_priority = realtime_priority_;
   renderer_ = std::make_unique<RealtimeRenderer>(*tap_, options);
-  if (!renderer_->set_scene(compile_scene(image))) return "the player refused the scene";
+  latest_generation_ = renderer_->set_scene(compile_scene(image));
   start_time_s_ = monotonic_s();
   std::optional<std::string> start_error;
   try {
@@ -48,7 +49,11 @@ std::optional<std::string> PlaySession::start(const Image& image) {
 }
 
 void PlaySession::update(const Image& image) {
-  if (renderer_) renderer_->set_scene(compile_scene(image));
+  if (renderer_) latest_generation_ = renderer_->set_scene(compile_scene(image));
+}
+
+bool PlaySession::latest_edit_playing() const {
+  return renderer_ && renderer_->stats().scene_generation == latest_generation_;
 }
 
 void PlaySession::stop() {
@@ -72,6 +77,7 @@ void PlaySession::touch(int finger, TouchPhase phase, double x_mm, double y_mm, 
   event.y_mm = y_mm;
   tap_->note_event(time_s);
   renderer_->push_event(event);
+  const double renderer_time_s = renderer_->renderer_time_s(time_s);
   if (phase == TouchPhase::up) {
     fingers_[finger].reset();
   } else {
@@ -83,7 +89,7 @@ void PlaySession::touch(int finger, TouchPhase phase, double x_mm, double y_mm, 
     const GesturePhase gp = phase == TouchPhase::down ? GesturePhase::down
                             : phase == TouchPhase::up ? GesturePhase::up
                                                       : GesturePhase::move;
-    recorder_.add(GestureSample{time_s, finger, x_mm, y_mm, std::nullopt, gp});
+    recorder_.add(GestureSample{renderer_time_s, finger, x_mm, y_mm, std::nullopt, gp});
   }
 }
 

@@ -1,6 +1,11 @@
 #pragma once
 // Playing mode: the document compiled into a scene, played by the real-time renderer to the
 // chosen output through a DriveTap, with the finger trail and the gesture being recorded.
+// The render thread asks for SCHED_FIFO as vimg-player's does (kDefaultRealtimePriority unless
+// told otherwise); priority_description() says what it got. Every document edit reaches the
+// renderer (RealtimeRenderer::set_scene never refuses); latest_edit_playing() says when it plays.
+// Threads: everything here on the GUI thread.
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <memory>
@@ -26,13 +31,18 @@ class PlaySession {
  public:
   // Makes the output the renderer drives, anew for every start (see output_choice.hpp).
   using OutputFactory = std::function<std::unique_ptr<DriveSink>(std::string& error)>;
-  PlaySession(OutputFactory make_output, double sample_rate_hz);
+  static constexpr int kDefaultRealtimePriority = 80;
+  // realtime_priority: SCHED_FIFO priority of the render thread (1..99), 0 for normal scheduling.
+  PlaySession(OutputFactory make_output, double sample_rate_hz, int realtime_priority = kDefaultRealtimePriority);
   ~PlaySession();
 
   // Starts playing `image`. Returns an error message on failure.
   std::optional<std::string> start(const Image& image);
-  // Plays the changed document from now on (the renderer cross-fades).
+  // Plays the changed document from now on (the renderer cross-fades; never refused).
   void update(const Image& image);
+  // The last start() or update() is what the renderer plays (false while it waits for a running
+  // cross-fade to end, at most 20 ms).
+  bool latest_edit_playing() const;
   // Stops the renderer and completes the output (a WAV file is written here).
   void stop();
   bool playing() const { return renderer_ && renderer_->running(); }
@@ -48,9 +58,13 @@ class PlaySession {
   // The tap of the current (or last) run; null before the first start.
   const DriveTap* tap() const { return tap_.get(); }
   LoopStats stats() const { return renderer_ ? renderer_->stats() : LoopStats{}; }
+  // "SCHED_FIFO 80", or "normal priority (SCHED_FIFO 80 refused: ...)": for the status display.
+  std::string priority_description() const { return describe(stats().priority); }
 
-  // Gesture recording. The recorder holds renderer-clock times; recorded_gesture() gives them on
-  // the output's time axis (0 = the first sample written), as a file of the take would be read.
+  // Gesture recording. The recorder holds renderer-clock times (RealtimeRenderer::renderer_time_s
+  // of each event: with an output that paces the stream, its stream time); recorded_gesture()
+  // gives them on the output's time axis (0 = the first sample written), as a file of the take
+  // would be read.
   void set_recording(bool on);
   bool recording() const { return recording_; }
   const GestureRecorder& recorder() const { return recorder_; }
@@ -62,6 +76,8 @@ class PlaySession {
   std::unique_ptr<DriveTap> tap_;
   std::unique_ptr<RealtimeRenderer> renderer_;
   double sample_rate_hz_;
+  int realtime_priority_;
+  std::uint64_t latest_generation_ = 0;
   std::vector<std::optional<TrailPoint>> fingers_;
   std::deque<TrailPoint> trail_;
   GestureRecorder recorder_;

@@ -2,12 +2,14 @@
 
 #include <SDL.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <thread>
 
 #include "hal/rest_on_exit.hpp"
+#include "realtime/clock.hpp"
 
 namespace vimg {
 
@@ -81,37 +83,46 @@ void SdlAudioSink::open(double sample_rate_hz) {
   }
   sample_rate_hz_ = sample_rate_hz;
   obtained_frames_ = obtained.samples;
-  started_.store(false);
+  phase_.store(Phase::priming);
   SDL_PauseAudioDevice(device_, 0);
 }
 
 void SdlAudioSink::callback(void* self_pointer, std::uint8_t* stream, int length) {
   auto& self = *static_cast<SdlAudioSink*>(self_pointer);
   const std::span<float> out(reinterpret_cast<float*>(stream), static_cast<std::size_t>(length) / sizeof(float));
-  const std::size_t got = self.ring_->pop_some(out);
-  for (std::size_t i = got; i < out.size(); ++i) out[i] = 0.0f;
-  if (got < out.size() && self.started_.load(std::memory_order_relaxed)) {
+  const Phase phase = self.phase_.load(std::memory_order_acquire);
+  const std::size_t got = phase == Phase::priming ? 0 : self.ring_->pop_some(out);
+  const bool rest = rest_requested();
+  for (std::size_t i = rest ? 0 : got; i < out.size(); ++i) out[i] = 0.0f;
+  if (!rest && got < out.size() && phase == Phase::playing) {
     self.underruns_.fetch_add(1, std::memory_order_relaxed);
   }
 }
 
 void SdlAudioSink::write(std::span<const float> drive, double) {
-  if (device_ == 0) {
-    return;
-  }
-  if (rest_requested()) {
-    close();
-    return;
-  }
-  while (!drive.empty()) {
-    const std::size_t pushed = ring_->push_some(drive);
-    drive = drive.subspan(pushed);
-    if (pushed > 0) started_.store(true, std::memory_order_relaxed);
-    if (!drive.empty()) {
-      // The device has not taken enough yet: wait about one device buffer's worth.
-      const auto wait = std::chrono::duration<double>(obtained_frames_ / sample_rate_hz_ / 4.0);
-      std::this_thread::sleep_for(wait);
+  if (device_ == 0) return;
+  static constexpr std::array<float, 64> kSilence{};
+  const bool rest = rest_requested();
+  std::size_t left = drive.size();
+  // The device takes a whole buffer per callback: poll about four times per buffer.
+  const auto poll_ns = static_cast<std::int64_t>(1e9 * obtained_frames_ / sample_rate_hz_ / 4.0);
+  std::int64_t last_progress_ns = monotonic_ns();
+  while (left > 0) {
+    std::span<const float> chunk = rest ? std::span<const float>(kSilence.data(), std::min(left, kSilence.size()))
+                                        : drive.subspan(drive.size() - left);
+    const std::size_t pushed = ring_->push_some(chunk);
+    left -= pushed;
+    if (phase_.load(std::memory_order_relaxed) == Phase::priming &&
+        ring_->size() >= std::min(ring_->capacity(), static_cast<std::size_t>(obtained_frames_))) {
+      phase_.store(Phase::playing, std::memory_order_release);
     }
+    if (pushed > 0) {
+      last_progress_ns = monotonic_ns();
+      continue;
+    }
+    const std::int64_t now_ns = monotonic_ns();
+    if (static_cast<double>(now_ns - last_progress_ns) * 1e-9 > kStallTimeout_s) return;  // the device stalled
+    sleep_until_ns(now_ns + poll_ns);
   }
 }
 
@@ -122,7 +133,7 @@ double SdlAudioSink::buffer_latency_s() const {
 
 void SdlAudioSink::close() {
   if (device_ != 0) {
-    started_.store(false);  // from here silence is the end of the stream, not an underrun
+    phase_.store(Phase::draining);  // from here silence is the end of the stream, not an underrun
     if (!rest_requested()) {
       // Let what was written play out (bounded by the ring length), then stop.
       for (int i = 0; i < 100 && ring_->size() > 0; ++i) {
@@ -130,7 +141,6 @@ void SdlAudioSink::close() {
       }
       std::this_thread::sleep_for(std::chrono::duration<double>(2.0 * obtained_frames_ / sample_rate_hz_));
     }
-    started_.store(false);
     SDL_CloseAudioDevice(device_);  // waits for the callback to return
     device_ = 0;
   }

@@ -1,59 +1,63 @@
 #include "player/realtime_renderer.hpp"
 
-#include "realtime/clock.hpp"
-
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cmath>
-#include <ctime>
-
-#include <pthread.h>
-#include <sched.h>
 
 #include "player/contact_mixer.hpp"
+#include "player/stream_clock.hpp"
+#include "realtime/clock.hpp"
 #include "realtime/soft_limit.hpp"
 
 namespace vimg {
 
 namespace {
 
-constexpr std::size_t kSceneQueueCapacity = 4;
-constexpr std::size_t kRetiredQueueCapacity = 16;
-constexpr std::size_t kMaxScenesInFlight = 8;  // < kRetiredQueueCapacity, so retiring never fails
-constexpr double kJitterBucket_s = 10e-6;
+// The render thread takes at most one scene per set_scene() call and retires each one once, so
+// the ring holds at most a few between two calls of the control thread.
+constexpr std::size_t kRetiredCapacity = 16;
 constexpr double kRateWindow_s = 0.5;
+
+bool valid_rate(double rate_hz) { return rate_hz >= 1.0 && rate_hz <= 48000.0; }
+
+std::size_t choose_block_samples(const RealtimeOptions& o, std::size_t sink_min) {
+  if (!valid_rate(o.sample_rate_hz)) return std::max<std::size_t>(1, sink_min);
+  const auto one_ms = static_cast<std::size_t>(std::max(1L, std::lround(o.sample_rate_hz / 1000.0)));
+  const auto longest = static_cast<std::size_t>(std::max(1.0, std::floor(o.sample_rate_hz / 50.0)));
+  const std::size_t wanted = o.block_samples > 0 ? o.block_samples : one_ms;
+  return std::max({std::size_t{1}, sink_min, std::min(wanted, longest)});
+}
 
 }  // namespace
 
 struct RealtimeRenderer::Impl {
-  Impl(const RealtimeOptions& o, std::size_t block_samples)
-      : tracker(o.tracker), a(o.max_contacts), b(o.max_contacts), block(block_samples) {}
+  explicit Impl(const RealtimeOptions& o)
+      : tracker(o.tracker), a(o.max_contacts), b(o.max_contacts), clock(o.sample_rate_hz) {}
   LiveTracker tracker;
   ContactMixer a;
   ContactMixer b;
   ContactMixer* current = &a;
   ContactMixer* fading = &b;
+  SceneEntry* current_entry = nullptr;
+  SceneEntry* fading_entry = nullptr;
   std::array<FingerStep, LiveTracker::kMaxFingers> steps{};
   std::vector<float> block;
   std::size_t fade_samples = 1;
   std::size_t fade_left = 0;
+  StreamClock clock;
+  std::int64_t window_start_ns = 0;
+  std::uint64_t window_samples = 0;
 };
 
 RealtimeRenderer::RealtimeRenderer(DriveSink& sink, const RealtimeOptions& options)
     : sink_(sink),
       options_(options),
-      block_samples_(std::max<std::size_t>(
-          1, std::min(options.block_samples,
-                      static_cast<std::size_t>(std::max(1.0, std::floor(options.sample_rate_hz / 50.0)))))),
+      block_samples_(choose_block_samples(options, 1)),
       events_(options.event_queue_capacity),
-      scene_in_(kSceneQueueCapacity),
-      scene_out_(kRetiredQueueCapacity),
-      impl_(std::make_unique<Impl>(options, block_samples_)),
-      jitter_histogram_(std::make_unique<std::atomic<std::uint32_t>[]>(kJitterBuckets)) {
-  impl_->fade_samples =
-      std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(options.crossfade_s * options.sample_rate_hz)));
-  for (std::size_t i = 0; i < kJitterBuckets; ++i) jitter_histogram_[i].store(0, std::memory_order_relaxed);
+      retired_(kRetiredCapacity),
+      impl_(std::make_unique<Impl>(options)) {
+  const double fade = options.crossfade_s * options.sample_rate_hz;
+  impl_->fade_samples = std::isfinite(fade) ? std::max<std::size_t>(1, static_cast<std::size_t>(std::max(0L, std::lround(fade)))) : 1;
 }
 
 RealtimeRenderer::~RealtimeRenderer() { stop(); }
@@ -61,10 +65,16 @@ RealtimeRenderer::~RealtimeRenderer() { stop(); }
 std::optional<std::string> RealtimeRenderer::start() {
   if (running()) return std::string("the renderer is already running");
   const double rate = options_.sample_rate_hz;
-  if (!(rate >= 1.0 && rate <= 48000.0)) return std::string("sample rate must be within 1..48000 Hz");
-  if (options_.block_samples == 0) return std::string("block size must be at least 1 sample");
+  if (!valid_rate(rate)) return std::string("sample rate must be within 1..48000 Hz");
   stop_requested_.store(false, std::memory_order_release);
   sink_.open(rate);
+  paced_.store(sink_.paces_stream(), std::memory_order_relaxed);
+  const std::size_t block = choose_block_samples(options_, sink_.min_block_samples());
+  block_samples_.store(block, std::memory_order_relaxed);
+  impl_->block.assign(block, 0.0f);
+  telemetry_.reset();
+  measured_rate_hz_.store(0.0, std::memory_order_relaxed);
+  stream_offset_s_.store(0.0, std::memory_order_relaxed);
   running_.store(true, std::memory_order_release);
   thread_ = std::thread([this] { run(); });
   return std::nullopt;
@@ -83,41 +93,57 @@ bool RealtimeRenderer::push_event(const TouchEvent& event) {
   return false;
 }
 
-void RealtimeRenderer::collect_retired() {
-  while (auto p = scene_out_.pop()) {
-    const Scene* done = *p;
-    for (auto it = owned_scenes_.begin(); it != owned_scenes_.end(); ++it) {
-      if (it->get() == done) {
-        owned_scenes_.erase(it);
-        break;
-      }
+void RealtimeRenderer::release(const SceneEntry* entry) {
+  for (auto it = owned_.begin(); it != owned_.end(); ++it) {
+    if (it->get() == entry) {
+      owned_.erase(it);
+      return;
     }
   }
 }
 
-bool RealtimeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
-  collect_retired();
-  if (!scene || owned_scenes_.size() >= kMaxScenesInFlight) return false;
-  if (!scene_in_.push(scene.get())) return false;
-  owned_scenes_.push_back(std::move(scene));
-  return true;
+void RealtimeRenderer::collect_retired() {
+  while (auto done = retired_.pop()) release(*done);
 }
 
-void RealtimeRenderer::render_block(double block_start_s) {
+std::uint64_t RealtimeRenderer::set_scene(std::shared_ptr<const Scene> scene) {
+  collect_retired();
+  auto entry = std::make_unique<SceneEntry>();
+  entry->scene = std::move(scene);
+  entry->generation = next_generation_++;
+  SceneEntry* const posted = entry.get();
+  const std::uint64_t generation = posted->generation;
+  owned_.push_back(std::move(entry));
+  // The render thread takes the mailbox's scene with an exchange too, so a scene handed back
+  // here was never seen by it: the control side releases it.
+  if (SceneEntry* replaced = pending_scene_.exchange(posted, std::memory_order_acq_rel)) {
+    release(replaced);
+    scenes_superseded_.fetch_add(1, std::memory_order_relaxed);
+  }
+  return generation;
+}
+
+void RealtimeRenderer::render_block(double block_start_s, double event_offset_s) {
   Impl& m = *impl_;
-  const double dt = 1.0 / options_.sample_rate_hz;
-  while (auto e = events_.pop()) {
-    if (!m.tracker.apply(*e, block_start_s)) dropped_events_.fetch_add(1, std::memory_order_relaxed);
+  const double rate = options_.sample_rate_hz;
+  const double dt = 1.0 / rate;
+  while (auto popped = events_.pop()) {
+    TouchEvent e = *popped;
+    e.time_s += event_offset_s;  // CLOCK_MONOTONIC onto the renderer clock
+    if (!m.tracker.apply(e, block_start_s)) dropped_events_.fetch_add(1, std::memory_order_relaxed);
   }
   for (std::size_t i = 0; i < m.block.size(); ++i) {
-    if (m.fade_left == 0) {
-      if (auto next = scene_in_.pop()) {
+    if (m.fade_left == 0 && pending_scene_.load(std::memory_order_relaxed) != nullptr) {
+      if (SceneEntry* next = pending_scene_.exchange(nullptr, std::memory_order_acq_rel)) {
         std::swap(m.current, m.fading);
-        m.current->set_scene(*next);
+        m.fading_entry = m.current_entry;
+        m.current_entry = next;
+        m.current->set_scene(next->scene.get());
         m.fade_left = m.fade_samples;
+        scene_generation_.store(next->generation, std::memory_order_relaxed);
       }
     }
-    const double t = block_start_s + static_cast<double>(i) * dt;
+    const double t = block_start_s + static_cast<double>(i) / rate;
     const std::size_t n = m.tracker.steps_at(t, dt, m.steps);
     const std::span<const FingerStep> touching(m.steps.data(), n);
     double d = m.current->step(touching, t, dt);
@@ -125,8 +151,10 @@ void RealtimeRenderer::render_block(double block_start_s) {
       const double w = 1.0 - static_cast<double>(m.fade_left) / static_cast<double>(m.fade_samples);
       d = w * d + (1.0 - w) * m.fading->step(touching, t, dt);
       if (--m.fade_left == 0) {
-        if (const Scene* old = m.fading->scene()) scene_out_.push(old);
         m.fading->set_scene(nullptr);
+        // Cannot fail (see kRetiredCapacity); if it did, the entry would live until destruction.
+        if (m.fading_entry != nullptr) retired_.push(m.fading_entry);
+        m.fading_entry = nullptr;
       }
     }
     m.block[i] = static_cast<float>(soft_limit(d));
@@ -134,75 +162,103 @@ void RealtimeRenderer::render_block(double block_start_s) {
   active_contacts_.store(m.current->active_contacts() + m.fading->active_contacts(), std::memory_order_relaxed);
 }
 
-void RealtimeRenderer::run() {
-  if (options_.realtime_priority > 0) {
-    sched_param param{};
-    param.sched_priority = std::clamp(options_.realtime_priority, 1, 99);
-    realtime_priority_.store(pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0,
-                             std::memory_order_relaxed);
+void RealtimeRenderer::publish_rate(std::int64_t now_ns) {
+  Impl& m = *impl_;
+  m.window_samples += m.block.size();
+  const double window_s = static_cast<double>(now_ns - m.window_start_ns) * 1e-9;
+  if (window_s >= kRateWindow_s) {
+    measured_rate_hz_.store(static_cast<double>(m.window_samples) / window_s, std::memory_order_relaxed);
+    m.window_start_ns = now_ns;
+    m.window_samples = 0;
   }
+}
+
+void RealtimeRenderer::run() {
+  const RealtimePriority priority = request_realtime_priority(options_.realtime_priority);
+  priority_requested_.store(priority.requested, std::memory_order_relaxed);
+  priority_error_.store(priority.error_number, std::memory_order_relaxed);
+  priority_granted_.store(priority.granted, std::memory_order_release);
+  impl_->window_start_ns = monotonic_ns();
+  impl_->window_samples = 0;
+  if (paced_.load(std::memory_order_relaxed)) {
+    run_paced_by_sink();
+  } else {
+    run_on_deadlines();
+  }
+}
+
+void RealtimeRenderer::run_on_deadlines() {
   const double rate = options_.sample_rate_hz;
-  const double block_s = static_cast<double>(block_samples_) / rate;
+  const std::size_t block = impl_->block.size();
+  const double block_ns = static_cast<double>(block) * 1e9 / rate;
+  const auto lag_ns = static_cast<std::int64_t>(std::max(kSkipAfterLag_s * 1e9, 2.0 * block_ns));
   const std::int64_t start_ns = monotonic_ns();
   const double start_s = static_cast<double>(start_ns) * 1e-9;
+  auto deadline_of = [&](std::uint64_t k) {
+    return start_ns + static_cast<std::int64_t>(std::llround(static_cast<double>(k) * block_ns));
+  };
   std::uint64_t k = 0;
-  std::int64_t window_start_ns = start_ns;
-  std::uint64_t window_samples = 0;
   while (!stop_requested_.load(std::memory_order_acquire)) {
-    const auto deadline_ns = start_ns + static_cast<std::int64_t>(std::llround(static_cast<double>(k) * block_s * 1e9));
+    const std::int64_t deadline_ns = deadline_of(k);
     sleep_until_ns(deadline_ns);
-    const std::int64_t woke_ns = monotonic_ns();
-    const double late_s = static_cast<double>(woke_ns - deadline_ns) * 1e-9;
-    const auto bucket = std::min<std::size_t>(kJitterBuckets - 1, static_cast<std::size_t>(std::max(0.0, late_s) / kJitterBucket_s));
-    jitter_histogram_[bucket].fetch_add(1, std::memory_order_relaxed);
-    if (late_s > jitter_max_s_.load(std::memory_order_relaxed)) jitter_max_s_.store(late_s, std::memory_order_relaxed);
-    if (late_s > block_s) overruns_.fetch_add(1, std::memory_order_relaxed);
-
-    render_block(start_s + static_cast<double>(k) * block_s);
-    sink_.write(impl_->block, start_s + static_cast<double>(k) * block_s);
-    blocks_.fetch_add(1, std::memory_order_relaxed);
-
-    window_samples += block_samples_;
-    const std::int64_t after_ns = monotonic_ns();
-    if (static_cast<double>(after_ns - window_start_ns) * 1e-9 >= kRateWindow_s) {
-      measured_rate_hz_.store(static_cast<double>(window_samples) / (static_cast<double>(after_ns - window_start_ns) * 1e-9),
-                              std::memory_order_relaxed);
-      window_start_ns = after_ns;
-      window_samples = 0;
-    }
+    telemetry_.record_wake(monotonic_ns(), deadline_ns);
+    const double t = start_s + static_cast<double>(k * block) / rate;
+    render_block(t, 0.0);
+    sink_.write(impl_->block, t);
     ++k;
-    // Far behind (more than two blocks): skip ahead rather than burst to catch up.
-    const std::int64_t next_ns = start_ns + static_cast<std::int64_t>(std::llround(static_cast<double>(k) * block_s * 1e9));
-    if (static_cast<double>(after_ns - next_ns) * 1e-9 > 2.0 * block_s) {
-      k = static_cast<std::uint64_t>(static_cast<double>(after_ns - start_ns) * 1e-9 / block_s);
+    const std::int64_t after_ns = monotonic_ns();
+    const std::int64_t next_ns = deadline_of(k);
+    if (after_ns > next_ns) telemetry_.record_overrun();
+    if (after_ns - next_ns > lag_ns) {  // far behind: skip ahead rather than burst to catch up
+      k = static_cast<std::uint64_t>(static_cast<double>(after_ns - start_ns) / block_ns);
+      telemetry_.record_skip();
     }
+    publish_rate(after_ns);
+  }
+}
+
+void RealtimeRenderer::run_paced_by_sink() {
+  const std::size_t block = impl_->block.size();
+  const double block_ns = static_cast<double>(block) * 1e9 / options_.sample_rate_hz;
+  StreamClock& clock = impl_->clock;
+  clock.start(monotonic_s());
+  std::uint64_t sample = 0;
+  while (!stop_requested_.load(std::memory_order_acquire)) {
+    const std::int64_t woke_ns = monotonic_ns();
+    clock.observe(sample, static_cast<double>(woke_ns) * 1e-9);
+    stream_offset_s_.store(clock.offset_s(), std::memory_order_relaxed);
+    const double t = clock.sample_time_s(sample);
+    const auto expected_ns = static_cast<std::int64_t>(std::llround(clock.to_monotonic_s(t) * 1e9));
+    telemetry_.record_wake(woke_ns, expected_ns);
+    render_block(t, clock.offset_s());
+    if (static_cast<double>(monotonic_ns() - expected_ns) > block_ns) telemetry_.record_overrun();
+    sink_.write(impl_->block, t);  // blocks on the device: its clock paces the stream
+    sample += block;
+    publish_rate(monotonic_ns());
   }
 }
 
 LoopStats RealtimeRenderer::stats() const {
+  const LoopTimingStats t = telemetry_.snapshot();
   LoopStats s;
   s.measured_rate_hz = measured_rate_hz_.load(std::memory_order_relaxed);
-  s.jitter_max_s = jitter_max_s_.load(std::memory_order_relaxed);
-  s.blocks = blocks_.load(std::memory_order_relaxed);
-  s.overruns = overruns_.load(std::memory_order_relaxed);
+  s.jitter_p50_s = t.jitter_p50_us * 1e-6;
+  s.jitter_p99_s = t.jitter_p99_us * 1e-6;
+  s.jitter_max_s = t.jitter_max_us * 1e-6;
+  s.blocks = t.cycles;
+  s.overruns = t.overruns;
+  s.skips = t.skips;
   s.dropped_events = dropped_events_.load(std::memory_order_relaxed);
   s.active_contacts = active_contacts_.load(std::memory_order_relaxed);
-  s.realtime_priority = realtime_priority_.load(std::memory_order_relaxed);
-  std::uint64_t total = 0;
-  std::array<std::uint32_t, kJitterBuckets> counts{};
-  for (std::size_t i = 0; i < kJitterBuckets; ++i) total += counts[i] = jitter_histogram_[i].load(std::memory_order_relaxed);
-  auto percentile = [&](double p) {
-    if (total == 0) return 0.0;
-    const auto target = static_cast<std::uint64_t>(std::ceil(p * static_cast<double>(total)));
-    std::uint64_t seen = 0;
-    for (std::size_t i = 0; i < kJitterBuckets; ++i) {
-      seen += counts[i];
-      if (seen >= target) return (static_cast<double>(i) + 0.5) * kJitterBucket_s;
-    }
-    return static_cast<double>(kJitterBuckets) * kJitterBucket_s;
-  };
-  s.jitter_p50_s = percentile(0.5);
-  s.jitter_p99_s = percentile(0.99);
+  s.priority.granted = priority_granted_.load(std::memory_order_acquire);
+  s.priority.requested = priority_requested_.load(std::memory_order_relaxed);
+  s.priority.error_number = priority_error_.load(std::memory_order_relaxed);
+  s.realtime_priority = s.priority.granted;
+  s.paced_by_sink = paced_.load(std::memory_order_relaxed);
+  s.block_samples = block_samples();
+  s.stream_offset_s = stream_offset_s_.load(std::memory_order_relaxed);
+  s.scene_generation = scene_generation_.load(std::memory_order_relaxed);
+  s.scenes_superseded = scenes_superseded_.load(std::memory_order_relaxed);
   return s;
 }
 

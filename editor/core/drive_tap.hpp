@@ -1,7 +1,10 @@
 #pragma once
 // A DriveSink in front of the chosen output: it forwards every block unchanged and keeps what the
 // editor shows about it (the oscilloscope's recent samples, the time base of the output, and the
-// time from an input event to the first drive it caused). Lock-free; write() never allocates.
+// time from an input event to the first drive it caused). It is transparent to the renderer: it
+// says the output paces the stream when the output does, and asks for the output's minimum block.
+// Threads: open(), close() and the accessors on the control/GUI thread; write() on the render
+// thread, lock-free, never allocating; note_event() on the input thread.
 #include <array>
 #include <atomic>
 #include <cstddef>
@@ -20,6 +23,8 @@ class DriveTap final : public DriveSink {
   void open(double sample_rate_hz) override;
   void write(std::span<const float> drive, double block_start_time_s) override;
   void close() override { output_.close(); }
+  bool paces_stream() const override { return output_.paces_stream(); }
+  std::size_t min_block_samples() const override { return output_.min_block_samples(); }
 
   double sample_rate_hz() const { return sample_rate_hz_.load(std::memory_order_acquire); }
   // The renderer-clock time of the first sample written (NaN before the first block).
@@ -34,9 +39,11 @@ class DriveTap final : public DriveSink {
   // silence, in seconds; at most kMaxLatencies are kept.
   std::vector<double> latencies_s() const;
 
-  // Maps a time on the renderer's clock to seconds into the output (0 = the first sample). The
-  // renderer skips blocks when it falls far behind, so the two differ by the skipped time; this
-  // is exact for the samples written so far. Times inside a skipped gap map to its end.
+  // Maps a time on the renderer's clock (the block times; RealtimeRenderer::renderer_time_s()
+  // puts an event time on it) to seconds into the output (0 = the first sample). A renderer paced
+  // by deadlines skips blocks when it falls far behind, so the two differ by the skipped time;
+  // with an output that paces the stream the block times follow the samples exactly. Exact for
+  // the samples written so far; times inside a skipped gap map to its end.
   double output_time_s(double renderer_time_s) const;
 
   static constexpr std::size_t kRingSize = 8192;

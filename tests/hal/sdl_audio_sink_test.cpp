@@ -1,16 +1,21 @@
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <thread>
 #include <vector>
 
 #include <SDL.h>
 #include <unistd.h>
 
+#include "../player/fake_shader.hpp"
+#include "hal/rest_on_exit.hpp"
 #include "hal/sdl_audio_sink.hpp"
+#include "player/realtime_renderer.hpp"
 
 namespace vimg {
 namespace {
@@ -106,6 +111,118 @@ TEST_F(SdlAudioSinkTest, LateBlocksCountAsUnderruns) {
   SDL_Delay(100);  // the device asks for more than we gave
   EXPECT_GE(sink.underruns(), 1u);
   sink.close();
+}
+
+// Forwards every block to the SDL sink and keeps what the renderer wrote (reserved ahead).
+class Recorder final : public DriveSink {
+ public:
+  explicit Recorder(DriveSink& out) : out_(out) {
+    samples.reserve(8000 * 20);
+    block_times_s.reserve(8000 * 20);
+    block_sizes.reserve(8000 * 20);
+  }
+  void open(double rate) override { out_.open(rate); }
+  void write(std::span<const float> drive, double block_start_time_s) override {
+    samples.insert(samples.end(), drive.begin(), drive.end());
+    block_times_s.push_back(block_start_time_s);
+    block_sizes.push_back(drive.size());
+    out_.write(drive, block_start_time_s);
+  }
+  void close() override { out_.close(); }
+  bool paces_stream() const override { return out_.paces_stream(); }
+  std::vector<float> samples;
+  std::vector<double> block_times_s;
+  std::vector<std::size_t> block_sizes;
+
+ private:
+  DriveSink& out_;
+};
+
+std::shared_ptr<const Scene> constant_scene(double drive) {
+  std::vector<ScenePrimitive> prims;
+  const Bounds2M box{0.0, 0.0, 1.0, 1.0};
+  prims.push_back({std::make_unique<test::FakeShader>(box, drive), box, "all"});
+  return std::make_shared<const Scene>(std::move(prims), Vec3{0, 0, 1}, 1.0);
+}
+
+// One clock per stream: the disk driver plays at its own pace, and the renderer follows it. No
+// block is skipped, and the file holds exactly the rendered samples (after the device's leading
+// silence, before its trailing silence).
+TEST_F(SdlAudioSinkTest, TheDeviceClockPacesTheRendererWithoutSkips) {
+  SdlAudioSink sdl;  // default buffers
+  Recorder recorder(sdl);
+  RealtimeOptions o;
+  o.sample_rate_hz = 8000.0;
+  {
+    RealtimeRenderer r(recorder, o);
+    r.set_scene(constant_scene(0.25));
+    ASSERT_FALSE(r.start());
+    TouchEvent down;
+    down.time_s = monotonic_s();
+    down.phase = TouchPhase::down;
+    down.x_mm = 10.0;
+    down.y_mm = 10.0;
+    ASSERT_TRUE(r.push_event(down));
+    std::this_thread::sleep_for(std::chrono::seconds(3));
+    TouchEvent up = down;
+    up.time_s = monotonic_s();
+    up.phase = TouchPhase::up;
+    ASSERT_TRUE(r.push_event(up));
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    const LoopStats s = r.stats();
+    r.stop();
+    EXPECT_TRUE(s.paced_by_sink);
+    EXPECT_EQ(s.skips, 0u);
+  }
+  EXPECT_TRUE(sdl.paces_stream());
+  EXPECT_EQ(sdl.underruns(), 0u);
+  const double rate = o.sample_rate_hz;
+  ASSERT_GT(recorder.block_times_s.size(), 100u);
+  std::size_t skips = 0;
+  for (std::size_t k = 1; k < recorder.block_times_s.size(); ++k) {
+    const double expected = recorder.block_times_s[k - 1] + static_cast<double>(recorder.block_sizes[k - 1]) / rate;
+    if (std::fabs(recorder.block_times_s[k] - expected) > 0.5 / rate) ++skips;
+  }
+  EXPECT_EQ(skips, 0u) << "blocks whose time does not follow the previous block";
+
+  const auto written = read_floats(file_);
+  const auto& rendered = recorder.samples;
+  auto first_nonzero = [](const std::vector<float>& v) {
+    std::size_t i = 0;
+    while (i < v.size() && v[i] == 0.0f) ++i;
+    return i;
+  };
+  const std::size_t rendered_first = first_nonzero(rendered);
+  const std::size_t written_first = first_nonzero(written);
+  ASSERT_LT(rendered_first, rendered.size());
+  ASSERT_GE(written_first, rendered_first);
+  const std::size_t lead = written_first - rendered_first;  // the device's silence before the stream
+  ASSERT_GE(written.size(), lead + rendered.size());
+  for (std::size_t i = 0; i < lead; ++i) ASSERT_EQ(written[i], 0.0f) << i;
+  for (std::size_t i = 0; i < rendered.size(); ++i) ASSERT_EQ(written[lead + i], rendered[i]) << i;
+  for (std::size_t i = lead + rendered.size(); i < written.size(); ++i) ASSERT_EQ(written[i], 0.0f) << i;
+}
+
+// A signal asks for rest while the render thread writes: write() plays silence from then on and
+// returns, and leaves the device open (closing it blocks and frees; that is the control thread's).
+TEST_F(SdlAudioSinkTest, RestRequestSilencesTheOutputWithoutClosingIt) {
+  SdlAudioOptions options;
+  options.device_buffer_frames = 64;
+  SdlAudioSink sink(options);
+  sink.open(8000.0);
+  const std::vector<float> block(64, 0.5f);
+  for (int i = 0; i < 8; ++i) sink.write(block, i * 64 / 8000.0);
+  request_rest(SIGTERM);
+  for (int i = 8; i < 16; ++i) sink.write(block, i * 64 / 8000.0);
+  const bool audio_still_up = SDL_WasInit(SDL_INIT_AUDIO) != 0;
+  clear_rest_request();
+  EXPECT_TRUE(audio_still_up) << "write() closed the device on the writing thread";
+  sink.close();
+  EXPECT_EQ(SDL_WasInit(SDL_INIT_AUDIO), 0u);
+  const auto written = read_floats(file_);
+  std::size_t driven = 0;
+  for (float v : written) driven += v != 0.0f ? 1 : 0;
+  EXPECT_LE(driven, 8u * 64u) << "nothing written after the rest request may play";
 }
 
 }  // namespace

@@ -52,6 +52,69 @@ TEST(RealtimeRenderer, RunsAtTheRequestedRate) {
   for (float v : sink.samples()) ASSERT_EQ(v, 0.0f);  // no scene, no touch: silence
 }
 
+// A sink that needs blocks of at least `min` samples.
+class BlockySink final : public DriveSink {
+ public:
+  explicit BlockySink(std::size_t min) : min_(min) {}
+  void open(double) override {}
+  void write(std::span<const float> drive, double) override { smallest = std::min(smallest, drive.size()); }
+  void close() override {}
+  std::size_t min_block_samples() const override { return min_; }
+  std::size_t smallest = 1u << 30;
+
+ private:
+  std::size_t min_;
+};
+
+TEST(RealtimeRenderer, BlocksAreOneMillisecondUnlessTheSinkNeedsMore) {
+  auto block_at = [](double rate_hz, std::size_t requested, std::size_t sink_min) {
+    BlockySink sink(sink_min);
+    RealtimeOptions o;
+    o.sample_rate_hz = rate_hz;
+    o.block_samples = requested;
+    RealtimeRenderer r(sink, o);
+    EXPECT_FALSE(r.start());
+    std::this_thread::sleep_for(30ms);
+    r.stop();
+    EXPECT_EQ(sink.smallest, r.block_samples());
+    EXPECT_EQ(r.stats().block_samples, r.block_samples());
+    return r.block_samples();
+  };
+  EXPECT_EQ(block_at(8000.0, 0, 1), 8u);      // 1 ms
+  EXPECT_EQ(block_at(48000.0, 0, 1), 48u);    // 1 ms
+  EXPECT_EQ(block_at(1000.0, 0, 1), 1u);      // 1 ms
+  EXPECT_EQ(block_at(8000.0, 0, 32), 32u);    // the sink's minimum
+  EXPECT_EQ(block_at(8000.0, 64, 1), 64u);    // as asked
+  EXPECT_EQ(block_at(8000.0, 1000, 1), 160u); // at most 1/50 s
+  EXPECT_EQ(block_at(8000.0, 1000, 400), 400u);  // unless the sink needs more
+}
+
+TEST(RealtimeRenderer, ReportsThePriorityItAskedForAndGot) {
+  MemorySink sink(8000);
+  RealtimeOptions o;
+  o.realtime_priority = 0;
+  {
+    RealtimeRenderer r(sink, o);
+    ASSERT_FALSE(r.start());
+    std::this_thread::sleep_for(20ms);
+    const LoopStats s = r.stats();
+    r.stop();
+    EXPECT_EQ(s.priority.requested, 0);
+    EXPECT_FALSE(s.realtime_priority);
+    EXPECT_EQ(describe(s.priority), "normal priority");
+  }
+  o.realtime_priority = 150;  // clamped to 99; granted only with CAP_SYS_NICE or an rtprio limit
+  RealtimeRenderer r(sink, o);
+  ASSERT_FALSE(r.start());
+  std::this_thread::sleep_for(20ms);
+  const LoopStats s = r.stats();
+  r.stop();
+  EXPECT_EQ(s.priority.requested, 99);
+  EXPECT_EQ(s.realtime_priority, s.priority.granted);
+  EXPECT_EQ(s.priority.granted, s.priority.error_number == 0);
+  EXPECT_NE(describe(s.priority).find("SCHED_FIFO 99"), std::string::npos) << describe(s.priority);
+}
+
 TEST(RealtimeRenderer, RejectsRatesOutsideOneTo48kHz) {
   MemorySink sink;
   RealtimeOptions o;
@@ -66,12 +129,12 @@ TEST(RealtimeRenderer, SceneChangeCrossFadesWithoutAStep) {
   o.sample_rate_hz = 8000.0;
   o.crossfade_s = 0.02;
   RealtimeRenderer r(sink, o);
-  ASSERT_TRUE(r.set_scene(constant_scene(0.4)));
+  r.set_scene(constant_scene(0.4));
   ASSERT_FALSE(r.start());
   std::this_thread::sleep_for(50ms);
   ASSERT_TRUE(r.push_event(touch(TouchPhase::down, 10.0)));
   std::this_thread::sleep_for(150ms);
-  ASSERT_TRUE(r.set_scene(constant_scene(0.1)));
+  r.set_scene(constant_scene(0.1));
   std::this_thread::sleep_for(150ms);
   r.stop();
   const auto& d = sink.samples();
@@ -97,7 +160,7 @@ TEST(RealtimeRenderer, EventsAndScenesFromOtherThreadsWhilePlaying) {
   o.sample_rate_hz = 8000.0;
   o.crossfade_s = 0.005;
   RealtimeRenderer r(sink, o);
-  ASSERT_TRUE(r.set_scene(constant_scene(0.2)));
+  r.set_scene(constant_scene(0.2));
   ASSERT_FALSE(r.start());
   std::atomic<bool> done{false};
   std::thread producer([&] {
@@ -110,9 +173,9 @@ TEST(RealtimeRenderer, EventsAndScenesFromOtherThreadsWhilePlaying) {
     }
     r.push_event(touch(TouchPhase::up, x, 1));
   });
-  int accepted = 0;
+  std::uint64_t last = 0;
   for (int i = 0; i < 40; ++i) {
-    if (r.set_scene(constant_scene(0.1 + 0.01 * (i % 5)))) ++accepted;
+    last = r.set_scene(constant_scene(0.1 + 0.01 * (i % 5)));
     std::this_thread::sleep_for(10ms);
   }
   done.store(true);
@@ -120,7 +183,8 @@ TEST(RealtimeRenderer, EventsAndScenesFromOtherThreadsWhilePlaying) {
   std::this_thread::sleep_for(50ms);
   const LoopStats s = r.stats();
   r.stop();
-  EXPECT_GT(accepted, 10);
+  EXPECT_EQ(last, 41u);
+  EXPECT_EQ(s.scene_generation, last);
   EXPECT_GT(s.blocks, 20u);
   double peak = 0.0;
   for (float v : sink.samples()) {
@@ -130,6 +194,42 @@ TEST(RealtimeRenderer, EventsAndScenesFromOtherThreadsWhilePlaying) {
   EXPECT_GT(peak, 0.09);  // the touches were rendered
   EXPECT_EQ(sink.samples().back(), 0.0f);  // lifted: silence
 }
+
+// Scene edits while playing: every edit is a distinct constant drive under a resting finger. Edits
+// come faster than one cross-fade (20 ms), so some are replaced before the render thread takes
+// them; the last one must always arrive and play once its cross-fade has settled.
+void play_edits(double edits_per_s) {
+  MemorySink sink(8000 * 10);
+  RealtimeOptions o;
+  o.sample_rate_hz = 8000.0;
+  o.crossfade_s = 0.02;
+  RealtimeRenderer r(sink, o);
+  EXPECT_EQ(r.set_scene(constant_scene(0.05)), 1u);
+  ASSERT_FALSE(r.start());
+  ASSERT_TRUE(r.push_event(touch(TouchPhase::down, 10.0)));
+  std::this_thread::sleep_for(30ms);
+  constexpr int kEdits = 120;
+  auto drive_of = [](int i) { return 0.1 + 0.003 * i; };  // 0.1 .. 0.457: below the limiter's knee
+  const auto interval = std::chrono::duration<double>(edits_per_s > 0.0 ? 1.0 / edits_per_s : 0.0);
+  auto next = std::chrono::steady_clock::now();
+  std::uint64_t last = 0;
+  for (int i = 0; i < kEdits; ++i) {
+    last = r.set_scene(constant_scene(drive_of(i)));
+    next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(interval);
+    std::this_thread::sleep_until(next);
+  }
+  std::this_thread::sleep_for(120ms);  // the last cross-fade (20 ms) has long settled
+  const LoopStats s = r.stats();
+  r.stop();
+  EXPECT_EQ(last, 1u + kEdits);
+  EXPECT_EQ(s.scene_generation, last) << "the renderer took the last scene";
+  ASSERT_FALSE(sink.samples().empty());
+  EXPECT_FLOAT_EQ(sink.samples().back(), static_cast<float>(drive_of(kEdits - 1)));
+}
+
+TEST(RealtimeRenderer, TheLastOfABurstOfEditsAlwaysArrives) { play_edits(0.0); }
+
+TEST(RealtimeRenderer, TheLastOfSixtyEditsPerSecondAlwaysArrives) { play_edits(60.0); }
 
 }  // namespace
 }  // namespace vimg
