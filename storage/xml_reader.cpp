@@ -16,6 +16,7 @@
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
+#include "storage/xml_limits.hpp"
 
 namespace vimg {
 
@@ -104,6 +105,11 @@ class Reader {
     if (xml.size() > kMaxImageFileBytes) {
       error(0, "file is larger than " + std::to_string(kMaxImageFileBytes / kMiB) + " MiB (limit " +
                    std::to_string(kMaxImageFileBytes) + ")");
+      result.diagnostics = list_.take();
+      return result;
+    }
+    if (const auto over = check_xml_limits(xml)) {
+      error(over->line, over->message);
       result.diagnostics = list_.take();
       return result;
     }
@@ -518,6 +524,11 @@ class Reader {
       if (i == text.size()) break;
       size_t end = i;
       while (end < text.size() && !is_space(text[end])) ++end;
+      if (points.size() == kMaxPolygonPoints) {
+        error(a->GetLineNum(), "<surface> polygon has more than " + std::to_string(kMaxPolygonPoints) + " points (limit " +
+                                   std::to_string(kMaxPolygonPoints) + ")");
+        return {};
+      }
       const std::string_view pair = text.substr(i, end - i);
       const auto comma = pair.find(',');
       const auto where = [&] {

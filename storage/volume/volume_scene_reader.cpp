@@ -7,6 +7,7 @@
 
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
+#include "storage/xml_limits.hpp"
 #include "storage/volume/nrrd.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
@@ -21,6 +22,10 @@ class SceneReader {
   explicit SceneReader(DiagnosticList& list) : list_(list) {}
 
   std::optional<VolumeScene> run(std::string_view xml) {
+    if (const auto over = check_xml_limits(xml)) {
+      error(over->line, over->message);
+      return std::nullopt;
+    }
     tinyxml2::XMLDocument doc;
     if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
       error(doc.ErrorLineNum(), std::string("malformed XML: ") + doc.ErrorName());

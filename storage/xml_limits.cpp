@@ -1,0 +1,127 @@
+#include "storage/xml_limits.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "storage/diagnostic.hpp"
+#include "storage/limits.hpp"
+
+namespace vimg {
+
+namespace {
+
+class Scanner {
+ public:
+  explicit Scanner(std::string_view xml) : xml_(xml) {}
+
+  std::optional<XmlLimitError> run() {
+    while (pos_ < xml_.size()) {
+      const std::size_t lt = xml_.find('<', pos_);
+      if (lt == std::string_view::npos) break;
+      advance_to(lt);
+      const std::string_view rest = xml_.substr(pos_);
+      if (rest.starts_with("<!--")) {
+        if (!markup(4, "-->")) break;
+      } else if (rest.starts_with("<![CDATA[")) {
+        if (!markup(9, "]]>")) break;  // text, not counted by tinyxml2 as markup, but a node all the same
+      } else if (rest.starts_with("<?")) {
+        if (!markup(2, "?>")) break;
+      } else if (rest.starts_with("<!")) {
+        if (!markup(2, ">")) break;
+      } else if (rest.starts_with("</")) {
+        --depth_;
+        if (!skip_past(2, ">")) break;
+      } else if (!start_tag()) {
+        break;
+      }
+      if (error_) return error_;
+    }
+    return error_;
+  }
+
+ private:
+  // Moves to `to`, counting the newlines passed.
+  void advance_to(std::size_t to) {
+    line_ += static_cast<int>(std::count(xml_.begin() + static_cast<std::ptrdiff_t>(pos_),
+                                         xml_.begin() + static_cast<std::ptrdiff_t>(to), '\n'));
+    pos_ = to;
+  }
+
+  // Skips from pos_ + `open` to just past `close`; false when it never comes (malformed).
+  bool skip_past(std::size_t open, std::string_view close) {
+    const std::size_t end = xml_.find(close, pos_ + open);
+    if (end == std::string_view::npos) return false;
+    advance_to(end + close.size());
+    return true;
+  }
+
+  bool count_node(int line) {
+    if (++nodes_ > kMaxXmlElements) {
+      error_ = XmlLimitError{line, "more than " + std::to_string(kMaxXmlElements) +
+                                       " elements, comments and processing instructions (limit " +
+                                       std::to_string(kMaxXmlElements) + ")"};
+      return false;
+    }
+    return true;
+  }
+
+  bool markup(std::size_t open, std::string_view close) {
+    if (!count_node(line_)) return true;
+    return skip_past(open, close);
+  }
+
+  static bool name_char(char c) {
+    const auto b = static_cast<unsigned char>(c);
+    return b >= 0x80 || (b >= 'a' && b <= 'z') || (b >= 'A' && b <= 'Z') || (b >= '0' && b <= '9') || c == '_' ||
+           c == ':' || c == '.' || c == '-';
+  }
+
+  // A start tag at pos_: counts it, checks the depth and its attributes, moves past its '>'.
+  bool start_tag() {
+    const int line = line_;
+    std::size_t i = pos_ + 1;
+    while (i < xml_.size() && name_char(xml_[i])) ++i;
+    const std::string_view name = xml_.substr(pos_ + 1, i - pos_ - 1);
+    if (!count_node(line)) return true;
+    if (++depth_ > kMaxXmlNestingDepth) {
+      error_ = XmlLimitError{line, "elements nested more than " + std::to_string(kMaxXmlNestingDepth) + " deep (limit " +
+                                       std::to_string(kMaxXmlNestingDepth) + ")"};
+      return true;
+    }
+    std::size_t attributes = 0;
+    char quote = 0;
+    for (; i < xml_.size(); ++i) {
+      const char c = xml_[i];
+      if (quote != 0) {
+        if (c == quote) quote = 0;
+      } else if (c == '"' || c == '\'') {
+        quote = c;
+      } else if (c == '=') {
+        if (++attributes > kMaxAttributesPerElement) {
+          error_ = XmlLimitError{line, "<" + escape_input(name) + "> has more than " +
+                                           std::to_string(kMaxAttributesPerElement) + " attributes (limit " +
+                                           std::to_string(kMaxAttributesPerElement) + ")"};
+          return true;
+        }
+      } else if (c == '>') {
+        if (xml_[i - 1] == '/') --depth_;  // <empty/>
+        advance_to(i + 1);
+        return true;
+      }
+    }
+    return false;  // the tag never ends: malformed, the parser says so
+  }
+
+  std::string_view xml_;
+  std::size_t pos_ = 0;
+  int line_ = 1;
+  int depth_ = 0;
+  std::size_t nodes_ = 0;
+  std::optional<XmlLimitError> error_;
+};
+
+}  // namespace
+
+std::optional<XmlLimitError> check_xml_limits(std::string_view xml) { return Scanner(xml).run(); }
+
+}  // namespace vimg

@@ -1,0 +1,22 @@
+#pragma once
+// The structure limits of an XML text (docs/limits.md, "Structure"), checked in one linear pass
+// before tinyxml2 parses it: tinyxml2 9 compares every new attribute with all earlier ones of its
+// element (quadratic), recurses once per nesting level and allocates a node per element, so a
+// hostile file must be refused before it reaches the parser. The pass follows tinyxml2's lexing of
+// comments, CDATA sections, declarations and quoted values, and counts lines the same way.
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace vimg {
+
+struct XmlLimitError {
+  int line = 0;         // 1-based line of the element or markup at fault
+  std::string message;  // e.g. "<dot> has more than 64 attributes (limit 64)"
+};
+
+// Checks kMaxAttributesPerElement, kMaxXmlNestingDepth and kMaxXmlElements; nothing when within.
+// Malformed text is left to the parser: this pass only refuses what is over a limit.
+std::optional<XmlLimitError> check_xml_limits(std::string_view xml);
+
+}  // namespace vimg
