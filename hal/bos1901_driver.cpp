@@ -176,11 +176,13 @@ bool Bos1901Driver::push_sample(std::uint16_t code) noexcept {
 
 void Bos1901Driver::write(std::span<const float> drive, double) {
   if (!playing_ || stopped_) {
+    keep_pace(drive.size());
     return;
   }
   if (gone_) {
     if (!link_.up()) {
-      return;  // the service is reconnecting: output is skipped, the bus left alone
+      keep_pace(drive.size());  // the service is reconnecting: output is skipped, the bus left alone
+      return;
     }
     // reconnect() restarted the stream from 0 V.
     gone_ = false;
@@ -189,6 +191,7 @@ void Bos1901Driver::write(std::span<const float> drive, double) {
   }
   if (rest_requested()) {
     stop(FaultKind::rest_requested);
+    keep_pace(drive.size());
     return;
   }
   // Learn the FIFO state once per block: an underrun since the last block shows here.
@@ -196,8 +199,11 @@ void Bos1901Driver::write(std::span<const float> drive, double) {
   if (exchange(word(kConfig, config_), status)) {
     handle_status(status);
   }
-  for (const float sample : drive) {
-    if (stopped_ || gone_) return;
+  for (std::size_t i = 0; i < drive.size(); ++i) {
+    if (stopped_ || gone_) {
+      keep_pace(drive.size() - i);
+      return;
+    }
     if (!streaming_) {
       if (restart_from_zero_) {
         if (!push_sample(0)) continue;  // restart from 0 V after running dry
@@ -205,8 +211,15 @@ void Bos1901Driver::write(std::span<const float> drive, double) {
       }
       streaming_ = true;
     }
-    push_sample(sample_code(static_cast<double>(sample) * gain_));  // a failed word is a lost sample
+    push_sample(sample_code(static_cast<double>(drive[i]) * gain_));  // a failed word is a lost sample
   }
+}
+
+void Bos1901Driver::keep_pace(std::size_t samples) noexcept {
+  // Consecutive skipped blocks continue from the previous deadline, so they keep the stream rate.
+  skip_until_us_ = std::max(skip_until_us_, clock_.now_us()) +
+                   static_cast<std::int64_t>(samples) * sample_period_us_;
+  clock_.sleep_until_us(skip_until_us_);
 }
 
 void Bos1901Driver::stop(FaultKind why) noexcept {

@@ -4,7 +4,8 @@
 // IC_STATUS so that every word returns the FIFO state on SDO, one 0 V sample, then OE.
 // write(): each drive sample becomes a 12-bit two's complement REFERENCE word scaled by
 // rated_voltage / full_scale_V of the profile; when the FIFO has no space the driver waits on the
-// clock for the chip to play samples out (the FIFO paces the renderer).
+// clock for the chip to play samples out: the FIFO paces the renderer (paces_stream()). A block
+// whose samples cannot reach the chip (gone, stopped) still takes its duration on the clock.
 // Underrun: IC_STATUS.EMPTY while streaming means the chip ran dry holding the last sample; it is
 // reported (one event per dry spell) and the stream restarts from a 0 V sample. OVT stops the output.
 // close(): a final 0 V sample, wait until the FIFO is EMPTY, then OE off: start and end at 0 V.
@@ -23,6 +24,7 @@
 //   - device service thread: faults() (consumer), device_path(), reconnect() while link() is down;
 //   - any thread: underruns(), device_gone().
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 
 #include "hal/actuator_profile.hpp"
@@ -51,6 +53,7 @@ class Bos1901Driver final : public DriveSink, public ServicedDevice {
   void open(double sample_rate_hz) override;  // throws std::invalid_argument for other rates
   void write(std::span<const float> drive, double block_start_time_s) override;
   void close() override;
+  bool paces_stream() const override { return true; }
 
   FaultLog& faults() override { return faults_; }
   const DeviceLink& link() const override { return link_; }
@@ -73,6 +76,7 @@ class Bos1901Driver final : public DriveSink, public ServicedDevice {
   bool push_sample(std::uint16_t code) noexcept;
   void handle_status(std::uint16_t status) noexcept;
   void stop(FaultKind why) noexcept;
+  void keep_pace(std::size_t samples) noexcept;  // waits as long as `samples` take to play
 
   SpiBus& bus_;
   Clock& clock_;
@@ -96,6 +100,7 @@ class Bos1901Driver final : public DriveSink, public ServicedDevice {
   bool stopped_ = false;
   bool transfer_failure_reported_ = false;
   int consecutive_failures_ = 0;
+  std::int64_t skip_until_us_ = 0;
 
   std::atomic<std::uint64_t> underruns_{0};
 };

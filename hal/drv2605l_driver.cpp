@@ -314,6 +314,9 @@ void Drv2605lDriver::update(std::int64_t time_us) noexcept {
         last_period_code_ = period;
       }
     }
+    if (gone_) {
+      return;  // lost just now: the loop mode is the service's from here on
+    }
   }
   const std::uint8_t max_code = max_rtp_code();
   auto code = static_cast<std::uint8_t>(std::min<long>(std::lround(level * max_code), max_code));

@@ -154,6 +154,8 @@ class ServicedSink final : public DriveSink {
     service_.stop();
     sink_.close();
   }
+  bool paces_stream() const override { return sink_.paces_stream(); }
+  std::size_t min_block_samples() const override { return sink_.min_block_samples(); }
 
  private:
   DriveSink& sink_;

@@ -171,5 +171,36 @@ TEST(Bos1901, SignalPutsItToRest) {
   EXPECT_EQ(chip.output_value(), 0);
 }
 
+// The FIFO paces the renderer (DriveSink::paces_stream()): write() returns when the chip has room,
+// so a block takes its own duration on the chip's clock in the steady state. When no sample can
+// reach the chip (gone, stopped) write() still takes the block's duration, or the renderer, which
+// never sleeps for a sink that paces the stream, would spin.
+TEST(Bos1901, PacesTheStreamEvenWhileItsOutputIsSkipped) {
+  FakeClock clock(1000);
+  Bos1901Emulator chip(clock);
+  Bos1901Driver driver(chip, clock, piezo_profile());
+  EXPECT_TRUE(driver.paces_stream());
+  driver.open(8000.0);
+  const auto block = sine(250.0, 0.5, 80);  // 10 ms
+  for (int k = 0; k < 10; ++k) driver.write(block, 0.01 * k);  // fills the FIFO first
+  auto block_duration_us = [&](double start_s) {
+    const auto before = clock.now_us();
+    driver.write(block, start_s);
+    return clock.now_us() - before;
+  };
+  EXPECT_NEAR(static_cast<double>(block_duration_us(0.1)), 10'000.0, 130.0);  // streaming
+  chip.set_unplugged(true);
+  EXPECT_NEAR(static_cast<double>(block_duration_us(0.11)), 10'000.0, 130.0);  // lost now
+  ASSERT_TRUE(driver.device_gone());
+  EXPECT_NEAR(static_cast<double>(block_duration_us(0.12)), 10'000.0, 130.0);  // skipped
+  chip.set_unplugged(false);
+  driver.reconnect();  // what the device service does
+  EXPECT_NEAR(static_cast<double>(block_duration_us(0.13)), 2'000.0, 2'000.0);  // the FIFO refills
+  chip.raise_over_temperature();
+  block_duration_us(0.14);
+  ASSERT_TRUE(driver.output_stopped());
+  EXPECT_NEAR(static_cast<double>(block_duration_us(0.15)), 10'000.0, 130.0);  // stopped
+}
+
 }  // namespace
 }  // namespace vimg
