@@ -10,12 +10,14 @@
 #include "apps/vimg-player/image_view.hpp"
 #include "apps/vimg-player/player_args.hpp"
 #include "apps/vimg-player/status_overlay.hpp"
+#include "apps/vimg-player/status_text.hpp"
 #include "apps/vimg-player/touch_input.hpp"
 #include "hal/actuator_profile.hpp"
 #include "hal/output_spec.hpp"
 #include "hal/rest_on_exit.hpp"
 #include "player/realtime_renderer.hpp"
 #include "player/scene.hpp"
+#include "realtime/realtime_priority.hpp"
 #include "storage/image_io.hpp"
 
 namespace vimg::player_app {
@@ -138,6 +140,10 @@ int run(const PlayerArgs& args) {
   RealtimeOptions realtime;
   realtime.sample_rate_hz = args.rate_hz;
   realtime.realtime_priority = args.realtime_priority;
+  // Threads: this one (UI, control), the render thread (renderer) and, for a hardware output, the
+  // device service thread, which the output's sink runs between open() and close() (started by
+  // renderer.start(), stopped by renderer.stop()): it formats the driver's fault codes into the
+  // messages taken below and reconnects a lost device, off the render thread.
   RealtimeRenderer renderer(output->sink(), realtime);
   renderer.set_scene(scene);
   if (auto error = renderer.start()) {
@@ -145,8 +151,14 @@ int run(const PlayerArgs& args) {
     return 1;
   }
 
-  StatusOverlay overlay(output->description(),
-                        args.px_per_mm ? "--px-per-mm" : (scale_from_dpi ? "display dpi" : "96 dpi assumed"), px_per_mm);
+  StatusText status(output->description(),
+                    args.px_per_mm ? "--px-per-mm" : (scale_from_dpi ? "display dpi" : "96 dpi assumed"), px_per_mm);
+  auto report_messages = [&] {
+    for (auto& message : output->take_messages()) {
+      std::fprintf(stderr, "vimg-player: %s\n", message.c_str());
+      status.note(std::move(message));
+    }
+  };
   TouchInput input(view, window_width, window_height);
   bool quit = false;
   while (!quit && !rest_requested()) {
@@ -157,29 +169,27 @@ int run(const PlayerArgs& args) {
         quit = true;
       }
       for (const TouchEvent& touch : input.translate(event)) {
-        if (!renderer.push_event(touch)) overlay.note("input queue full: event dropped");
+        if (!renderer.push_event(touch)) status.note("input queue full: event dropped");
       }
     }
-    for (const auto& message : output->take_messages()) {
-      std::fprintf(stderr, "vimg-player: %s\n", message.c_str());
-      overlay.note(message);
-    }
+    report_messages();
     SDL_SetRenderDrawColor(sdl.renderer, 30, 30, 34, 255);
     SDL_RenderClear(sdl.renderer);
     draw_image(sdl.renderer, image, view);
     input.draw_fingers(sdl.renderer);
-    overlay.draw(sdl.renderer, renderer.stats(), output->underruns());
+    draw_status_panel(sdl.renderer, status.lines(renderer.stats(), output->underruns(), output->device_gone()));
     SDL_RenderPresent(sdl.renderer);
     SDL_Delay(10);
   }
-  renderer.stop();  // stops the thread and puts the output to rest
+  renderer.stop();  // stops the thread (and the device service) and puts the output to rest
+  report_messages();  // the last faults of the session, drained when the service stopped
   const LoopStats stats = renderer.stats();
-  std::printf("vimg-player: %s; %llu blocks at %.0f Hz, jitter p99 %.3f ms, max %.3f ms, %llu underruns%s\n",
+  std::printf("vimg-player: %s; %llu blocks at %.0f Hz, jitter p99 %.3f ms, max %.3f ms, %llu underruns; %s%s\n",
               output->description().c_str(), static_cast<unsigned long long>(stats.blocks), stats.measured_rate_hz,
               stats.jitter_p99_s * 1e3, stats.jitter_max_s * 1e3,
-              static_cast<unsigned long long>(output->underruns()),
+              static_cast<unsigned long long>(output->underruns()), describe(stats.priority).c_str(),
               rest_requested() ? "; stopped by a signal" : "");
-  return 0;
+  return rest_requested() ? 128 + rest_signal() : 0;  // 130 for SIGINT, 143 for SIGTERM
 }
 
 }  // namespace

@@ -69,7 +69,7 @@ awk '
     if (loud < 400) { print "no texture drive while the mouse moved"; exit 1 }
     if (first < 100) { print "drive before the first touch"; exit 1 }
   }' "$work/samples.txt"
-# SIGTERM: the player leaves its loop, puts the output to rest and completes the file.
+# SIGTERM: the player leaves its loop, puts the output to rest, completes the file and exits 143.
 SDL_AUDIODRIVER=dummy "$player" "$work/plate.vimg" --window 800x600 --px-per-mm 5 \
   --output "wav:$work/term.wav" >"$work/term.log" 2>&1 &
 player_pid=$!
@@ -79,7 +79,7 @@ kill -TERM "$player_pid"
 status=0
 wait "$player_pid" || status=$?
 cat "$work/term.log"
-[ "$status" = 0 ] || { echo "vimg-player exited with $status on SIGTERM"; exit 1; }
+[ "$status" = 143 ] || { echo "vimg-player exited with $status on SIGTERM, not 143"; exit 1; }
 grep -q "stopped by a signal" "$work/term.log" || { echo "no rest message on SIGTERM"; exit 1; }
 size=$(stat -c %s "$work/term.wav")
 riff=$(od -A n -t u4 -j 4 -N 4 "$work/term.wav" | tr -d ' ')
