@@ -106,6 +106,7 @@ void DeviceService::reconnect_if_due(Entry& entry, bool down, std::int64_t now_n
 
 void DeviceService::post(std::string message) {
   const std::lock_guard lock(mutex_);
+  if (messages_.size() == kMaxMessages) messages_.erase(messages_.begin());
   messages_.push_back(std::move(message));
 }
 

@@ -16,6 +16,7 @@
 // device whose link is up.
 #include <atomic>
 #include <condition_variable>
+#include <cstddef>
 #include <cstdint>
 #include <mutex>
 #include <string>
@@ -34,6 +35,9 @@ struct DeviceServiceOptions {
 
 class DeviceService {
  public:
+  // Messages kept for take_messages(); older ones are dropped when nobody takes them.
+  static constexpr std::size_t kMaxMessages = 256;
+
   explicit DeviceService(DeviceServiceOptions options = {});
   ~DeviceService();  // stops
   DeviceService(const DeviceService&) = delete;

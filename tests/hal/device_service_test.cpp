@@ -107,6 +107,20 @@ TEST(DeviceService, ReportsLostFaultEvents) {
   EXPECT_EQ(messages.back(), "/dev/flaky: 36 fault events lost (the fault log was full)");
 }
 
+TEST(DeviceService, KeepsOnlyTheNewestMessagesWhenNobodyTakesThem) {
+  DeviceService service;
+  FlakyDevice device(0);
+  service.add(device);
+  const int total = static_cast<int>(DeviceService::kMaxMessages) + 40;
+  for (int i = 0; i < total; ++i) {
+    device.faults().push({FaultKind::underrun, 0, i});
+    service.poll(0);
+  }
+  const auto messages = service.take_messages();
+  ASSERT_EQ(messages.size(), DeviceService::kMaxMessages);
+  EXPECT_EQ(messages.back(), describe({FaultKind::underrun, 0, 0}, "/dev/flaky"));
+}
+
 // --- The render thread and the service thread together, on the real clock ------------------------
 
 std::vector<float> carrier(double frequency_hz, double duration_s, double amplitude) {
