@@ -145,6 +145,10 @@ void HapticLoop::run() {
   priority_errno_.store(priority.error_number, std::memory_order_release);
 
   const auto period_ns = static_cast<std::int64_t>(std::llround(1e9 / config_.rate_hz));
+  // Fewer missed periods than the overrun limit are caught up; more are skipped. Catching up
+  // overruns once per missed period, so one stall never trips the overrun watchdog: only work
+  // that keeps not fitting in the period does.
+  const std::int64_t catch_up_ns = period_ns * std::max(1, cycle_.safety().overrun_limit_cycles());
   const std::int64_t start_ns = monotonic_ns();
   std::int64_t deadline_ns = start_ns;
   bool overran = false;
@@ -153,8 +157,8 @@ void HapticLoop::run() {
     sleep_until_ns(deadline_ns);
     const std::int64_t woke_ns = monotonic_ns();
     telemetry_.record_wake(woke_ns, deadline_ns);
-    if (woke_ns - deadline_ns >= period_ns) {
-      // A period or more behind: run this cycle at the latest deadline passed, never burst.
+    if (woke_ns - deadline_ns >= catch_up_ns) {
+      // Too far behind to catch up: run this cycle at the latest deadline passed.
       deadline_ns += (woke_ns - deadline_ns) / period_ns * period_ns;
       telemetry_.record_skip();
     }

@@ -1,0 +1,196 @@
+#include "apps/force/force_session.hpp"
+
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include "apps/force/status_line.hpp"
+#include "cmdline/command_line.hpp"
+#include "hal/force/hid_force_finder.hpp"
+#include "hal/force/simulated_force_device.hpp"
+#include "player/haptic/force_log.hpp"
+#include "player/haptic/force_run_report.hpp"
+#include "realtime/clock.hpp"
+#include "storage/atomic_file.hpp"
+#include "storage/number_text.hpp"
+#include "storage/volume/probe_path_io.hpp"
+#include "storage/volume/volume_scene_io.hpp"
+
+namespace vimg::force_app {
+namespace {
+
+constexpr std::int64_t kPollPeriod_ns = 10'000'000;
+
+void error(const std::string& message) { std::fprintf(stderr, "vimg-force: error: %s\n", message.c_str()); }
+
+void print_diagnostics(const std::vector<Diagnostic>& diagnostics) {
+  for (const auto& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+}
+
+// The probe path as the simulated hand's path, starting at loop time 0.
+std::optional<std::vector<HandPathPoint>> load_hand_path(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    std::fprintf(stderr, "%s: error: cannot open file\n", file.c_str());
+    return std::nullopt;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  const ProbePathParseResult parsed = parse_probe_path_csv(text.str(), file);
+  print_diagnostics(parsed.diagnostics);
+  if (!parsed.path) return std::nullopt;
+  std::vector<HandPathPoint> hand;
+  const double t0 = parsed.path->front().time_s;
+  for (const ProbePathPoint& p : *parsed.path) hand.push_back({p.time_s - t0, p.position_m});
+  return hand;
+}
+
+// A file written at the end must have a folder now, so that a typo fails before the device moves.
+bool folder_exists_for(const std::string& file) {
+  const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+  std::error_code ec;
+  return parent.empty() || std::filesystem::is_directory(parent, ec);
+}
+
+struct OpenedDevice {
+  std::unique_ptr<ForceDevice> device;
+  std::string description;
+};
+
+OpenedDevice open_device(const ForceArgs& args, const DeviceProfile& profile, std::vector<HandPathPoint> hand) {
+  OpenedDevice opened;
+  if (args.is_sim()) {
+    // The simulated device is the one the scene describes.
+    ForceDeviceLimits limits;
+    limits.max_force_N = profile.max_force_N;
+    limits.max_stiffness_N_per_m = profile.max_stiffness_N_per_m;
+    limits.workspace_m = profile.workspace_mm * 1e-3;
+    opened.device = std::make_unique<SimulatedForceDevice>(std::move(hand), HandModel{}, limits);
+    opened.description = args.path_file.empty() ? "sim, the hand at rest at the workspace centre" : "sim, the hand on " + args.path_file;
+    return opened;
+  }
+  HidapiTransportHost host;
+  HidForceSearch found = find_hid_force_device(host, args.hid_path);
+  if (!found.device) {
+    error(found.report);
+    return opened;
+  }
+  char ids[16];
+  std::snprintf(ids, sizeof ids, "%04x:%04x", found.opened.vendor_id, found.opened.product_id);
+  opened.description = "hid " + found.opened.path + " (" + ids + (found.opened.product.empty() ? "" : " " + found.opened.product) + ")";
+  opened.device = std::move(found.device);
+  return opened;
+}
+
+int interrupted(int signal) { return signal == SIGTERM ? cmdline::kExitSigterm : cmdline::kExitSigint; }
+
+}  // namespace
+
+int run_force_session(const ForceArgs& args, const std::atomic<int>& signal_received) {
+  VolumeSceneLoadResult loaded = load_volume_scene_file(args.scene_path);
+  print_diagnostics(loaded.diagnostics);
+  if (!loaded.ok()) return cmdline::kExitFailure;
+  const DeviceProfile profile = loaded.loaded->scene.device;
+  std::vector<HandPathPoint> hand{{0.0, Vec3{}}};  // the workspace centre
+  if (!args.path_file.empty()) {
+    auto path = load_hand_path(args.path_file);
+    if (!path) return cmdline::kExitFailure;
+    hand = std::move(*path);
+  }
+  for (const std::string* file : {&args.log_file, &args.telemetry_file}) {
+    if (!file->empty() && !folder_exists_for(*file)) {
+      std::fprintf(stderr, "%s: error: cannot write there: the folder does not exist\n", file->c_str());
+      return cmdline::kExitFailure;
+    }
+  }
+  OpenedDevice opened = open_device(args, profile, std::move(hand));
+  if (!opened.device) return cmdline::kExitFailure;
+  if (const int s = signal_received.load()) return interrupted(s);  // nothing has moved yet
+
+  HapticLoopConfig config;
+  config.rate_hz = profile.rate_hz;
+  config.safety.max_force_N = profile.max_force_N;
+  config.safety.gate_force_N = profile.gate_force_N;
+  config.safety.ramp_time_s = profile.ramp_time_ms * 1e-3;
+  config.realtime_priority = args.realtime_priority;
+  // Two seconds of rows: the writer drains the ring every 5 ms.
+  config.log_capacity_rows = args.log_file.empty() ? 0 : static_cast<std::size_t>(2.0 * profile.rate_hz);
+  HapticLoop loop(*opened.device, config);
+  loop.submit_scene(build_haptic_scene(*loaded.loaded));
+  std::unique_ptr<ForceLogWriter> log;
+  if (!args.log_file.empty()) {
+    log = std::make_unique<ForceLogWriter>(loop, args.log_file);
+    if (!log->ok()) {
+      error(log->error());
+      return cmdline::kExitFailure;
+    }
+    log->start();
+  }
+  if (!loop.start()) {
+    error("cannot start the haptic loop at " + format_decimal(profile.rate_hz) + " Hz (100..4000)");
+    return cmdline::kExitFailure;
+  }
+
+  const bool terminal = ::isatty(STDERR_FILENO) == 1;
+  const double start_s = monotonic_s();
+  double next_status_s = start_s + 1.0;
+  bool announced = false;
+  bool status_shown = false;
+  std::string exit_reason;
+  int code = cmdline::kExitOk;
+  for (;;) {
+    sleep_until_ns(monotonic_ns() + kPollPeriod_ns);
+    if (const int s = signal_received.load()) {
+      exit_reason = s == SIGTERM ? "SIGTERM" : "SIGINT";
+      code = interrupted(s);
+      break;
+    }
+    if (!loop.running()) {
+      exit_reason = "device fault: " + loop.fault_text();
+      code = cmdline::kExitFailure;
+      break;
+    }
+    const double now_s = monotonic_s();
+    if (args.seconds && now_s - start_s >= *args.seconds) {
+      exit_reason = "seconds elapsed";
+      break;
+    }
+    if (!announced && loop.cycles() > 0) {
+      announced = true;
+      std::fprintf(stderr, "vimg-force: %s at %s Hz, clamp %s N, slew %s N/ms, %s\n", opened.description.c_str(),
+                   format_decimal(loop.rate_hz()).c_str(), format_decimal(loop.safety().clamp_N()).c_str(),
+                   format_decimal(loop.safety().max_slew_N_per_ms()).c_str(), describe(loop.realtime_priority()).c_str());
+    }
+    if (terminal && now_s >= next_status_s) {
+      next_status_s += 1.0;
+      std::fprintf(stderr, "\r%s\x1b[K", format_status_line(loop.status()).c_str());
+      status_shown = true;
+    }
+  }
+  loop.stop();  // zero force before anything else
+  if (status_shown) std::fputc('\n', stderr);
+
+  if (log) {
+    if (auto failure = log->finish()) {
+      error(*failure);
+      code = cmdline::kExitFailure;
+    }
+  }
+  if (!args.telemetry_file.empty()) {
+    const ForceRunReport report = make_force_run_report(loop, exit_reason, opened.description);
+    if (auto failure = write_file_atomically(args.telemetry_file, force_run_report_json(report))) {
+      error(*failure);
+      code = cmdline::kExitFailure;
+    }
+  }
+  if (loop.failed()) error("device fault: " + loop.fault_text());
+  return code;
+}
+
+}  // namespace vimg::force_app
