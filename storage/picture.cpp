@@ -1,23 +1,28 @@
 #include "storage/picture.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <vector>
 
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 
+// Everything is drawn in pixel units: X = x_mm * scale, pixel px covers [px, px + 1) and is sampled
+// at its centre px + 0.5. A pixel's coverage is clamp(0.5 - d, 0, 1) for the signed distance d (in
+// pixels, negative inside) from its centre to the shape's edge: one pixel of ramp across the edge.
+// Each shape is drawn row by row over the pixels its ramp can reach, found analytically; pixels
+// fully inside are not measured. Polygons are filled by scanlines: exact area coverage per pixel
+// from the edges crossing the row (even-odd rule), in time proportional to the pixels and to the
+// edges' heights in rows, never to pixels times points.
 namespace vimg {
 
 namespace {
 
-// Euclidean length without std::hypot's care for overflow: a distance that overflows to infinity
-// only means "far away", which draws nothing.
-inline double length(double dx, double dy) { return std::sqrt(dx * dx + dy * dy); }
-
 struct Rgb {
-  double r, g, b;
+  float r, g, b;
 };
 
 // Canvas and colours (0..255).
@@ -28,66 +33,9 @@ constexpr Rgb kMidFrequencyColour{220, 30, 90};    // ~140 Hz (geometric middle)
 constexpr Rgb kHighFrequencyColour{110, 40, 200};  // 1000 Hz: violet
 constexpr Rgb kSurfaceColour{20, 120, 150};
 
-// A shape as a signed distance (mm, negative inside) over a bounding box.
-struct Box {
-  double min_x, min_y, max_x, max_y;
-};
-
-class Painter {
- public:
-  Painter(RgbRaster& raster, double scale) : raster_(raster), scale_(scale) {}
-
-  // Blends colour(x, y) with opacity(x, y) * coverage over every pixel near the shape.
-  template <class Distance, class Colour>
-  void fill(const Box& box, Distance distance, Colour colour) {
-    const double pad = 1.0 / scale_;
-    const int x0 = clamp_px(std::floor((box.min_x - pad) * scale_), raster_.width);
-    const int x1 = clamp_px(std::ceil((box.max_x + pad) * scale_), raster_.width);
-    const int y0 = clamp_px(std::floor((box.min_y - pad) * scale_), raster_.height);
-    const int y1 = clamp_px(std::ceil((box.max_y + pad) * scale_), raster_.height);
-    for (int py = y0; py < y1; ++py) {
-      const double y = (py + 0.5) / scale_;
-      for (int px = x0; px < x1; ++px) {
-        const double x = (px + 0.5) / scale_;
-        const double coverage = std::clamp(0.5 - distance(x, y) * scale_, 0.0, 1.0);
-        if (coverage <= 0.0) continue;
-        double alpha = 1.0;
-        const Rgb c = colour(x, y, alpha);
-        blend(px, py, c, coverage * alpha);
-      }
-    }
-  }
-
- private:
-  static int clamp_px(double v, int limit) {
-    if (!(v > 0.0)) return 0;
-    return v >= limit ? limit : static_cast<int>(v);
-  }
-
-  void blend(int px, int py, const Rgb& c, double alpha) {
-    std::uint8_t* p = raster_.pixel(px, py);
-    const double channels[3] = {c.r, c.g, c.b};
-    for (int i = 0; i < 3; ++i) {
-      const double v = p[i] * (1.0 - alpha) + channels[i] * alpha;
-      p[i] = static_cast<std::uint8_t>(std::clamp(v + 0.5, 0.0, 255.0));
-    }
-  }
-
-  RgbRaster& raster_;
-  double scale_;
-};
-
-double segment_distance(double x, double y, const Line& l) {
-  const double dx = l.x2_mm - l.x1_mm;
-  const double dy = l.y2_mm - l.y1_mm;
-  const double length2 = dx * dx + dy * dy;
-  double t = length2 > 0.0 ? ((x - l.x1_mm) * dx + (y - l.y1_mm) * dy) / length2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return length(x - (l.x1_mm + t * dx), y - (l.y1_mm + t * dy));
-}
-
 Rgb mix(const Rgb& a, const Rgb& b, double t) {
-  return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
+  const auto f = static_cast<float>(t);
+  return {a.r + (b.r - a.r) * f, a.g + (b.g - a.g) * f, a.b + (b.b - a.b) * f};
 }
 
 // Pattern height in [0, 1] at phase u (in periods).
@@ -101,98 +49,447 @@ double pattern_value(SurfacePattern pattern, double u) {
   return 0.0;
 }
 
-double polygon_distance(double x, double y, const std::vector<Point2Mm>& pts) {
-  double best = INFINITY;
-  bool inside = false;
-  for (std::size_t i = 0, j = pts.size() - 1; i < pts.size(); j = i++) {
-    const Point2Mm& a = pts[j];
-    const Point2Mm& b = pts[i];
-    Line edge;
-    edge.x1_mm = a.x_mm;
-    edge.y1_mm = a.y_mm;
-    edge.x2_mm = b.x_mm;
-    edge.y2_mm = b.y_mm;
-    best = std::min(best, segment_distance(x, y, edge));
-    if ((a.y_mm > y) != (b.y_mm > y) && x < a.x_mm + (y - a.y_mm) * (b.x_mm - a.x_mm) / (b.y_mm - a.y_mm)) {
-      inside = !inside;
-    }
+// cos(2 pi u) for u in periods, from a table: 4096 steps a period, far below one colour level.
+class CosTable {
+ public:
+  CosTable() {
+    for (std::size_t i = 0; i < kSize; ++i) values_[i] = static_cast<float>(std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / kSize));
   }
-  return inside ? -best : best;
+  float operator()(double u) const {
+    const double f = u - std::floor(u);
+    return values_[static_cast<std::size_t>(f * kSize) & (kSize - 1)];
+  }
+
+ private:
+  static constexpr std::size_t kSize = 4096;
+  std::array<float, kSize> values_{};
+};
+
+const CosTable& cos_table() {
+  static const CosTable table;
+  return table;
 }
 
-void draw_surface(Painter& painter, const Surface& s) {
-  const auto colour = [&s](double x, double, double& alpha) {
-    const double v = pattern_value(s.pattern, x / s.period_mm);
-    alpha = (0.25 + 0.75 * s.gain) * (0.3 + 0.7 * v);
-    return kSurfaceColour;
-  };
-  switch (s.shape) {
-    case SurfaceShape::rect: {
-      const double cx = s.x_mm + s.width_mm / 2.0;
-      const double cy = s.y_mm + s.height_mm / 2.0;
-      const auto distance = [&](double x, double y) {
-        const double qx = std::abs(x - cx) - s.width_mm / 2.0;
-        const double qy = std::abs(y - cy) - s.height_mm / 2.0;
-        return length(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0);
-      };
-      painter.fill({s.x_mm, s.y_mm, s.x_mm + s.width_mm, s.y_mm + s.height_mm}, distance, colour);
-      break;
-    }
-    case SurfaceShape::ellipse: {
-      const auto distance = [&](double x, double y) {
-        const double u = (x - s.cx_mm) / s.rx_mm;
-        const double v = (y - s.cy_mm) / s.ry_mm;
-        const double k = length(u, v);
-        if (k == 0.0) return -std::min(s.rx_mm, s.ry_mm);
-        // First-order distance: (k - 1) / |grad k|.
-        const double grad = length(u / s.rx_mm, v / s.ry_mm) / k;
-        return (k - 1.0) / grad;
-      };
-      painter.fill({s.cx_mm - s.rx_mm, s.cy_mm - s.ry_mm, s.cx_mm + s.rx_mm, s.cy_mm + s.ry_mm}, distance, colour);
-      break;
-    }
-    case SurfaceShape::polygon: {
-      if (s.points.size() < 3) return;
-      Box box{s.points[0].x_mm, s.points[0].y_mm, s.points[0].x_mm, s.points[0].y_mm};
-      for (const auto& p : s.points) {
-        box = {std::min(box.min_x, p.x_mm), std::min(box.min_y, p.y_mm), std::max(box.max_x, p.x_mm),
-               std::max(box.max_y, p.y_mm)};
-      }
-      painter.fill(box, [&](double x, double y) { return polygon_distance(x, y, s.points); }, colour);
-      break;
+// The pixels whose centres lie strictly inside (lo, hi), clamped to [0, limit): [first, last].
+// False when there are none (also for NaN bounds).
+bool pixel_span(double lo, double hi, int limit, int& first, int& last) {
+  if (!(lo < hi) || !(hi > 0.5) || !(lo < limit - 0.5)) return false;
+  const double f = std::max(std::ceil(lo - 0.5), 0.0);
+  const double l = std::min(std::floor(hi - 0.5), static_cast<double>(limit - 1));
+  if (!(f <= l)) return false;
+  first = static_cast<int>(f);
+  last = static_cast<int>(l);
+  return true;
+}
+
+inline float coverage_of(double d) { return static_cast<float>(std::clamp(0.5 - d, 0.0, 1.0)); }
+
+class Painter {
+ public:
+  Painter(RgbRaster& raster, double scale, PictureWork& work) : raster_(raster), scale_(scale), work_(work) {}
+
+  int width() const { return raster_.width; }
+  int height() const { return raster_.height; }
+  double scale() const { return scale_; }
+  PictureWork& work() { return work_; }
+  std::uint8_t* row(int py) { return raster_.pixel(0, py); }
+
+  // Blends colour c at opacity a (0..1) into the pixel at p.
+  static void blend(std::uint8_t* p, const Rgb& c, float a) {
+    if (!(a > 0.0f)) return;
+    if (a > 1.0f) a = 1.0f;
+    p[0] = static_cast<std::uint8_t>(p[0] + (c.r - p[0]) * a + 0.5f);
+    p[1] = static_cast<std::uint8_t>(p[1] + (c.g - p[1]) * a + 0.5f);
+    p[2] = static_cast<std::uint8_t>(p[2] + (c.b - p[2]) * a + 0.5f);
+  }
+
+ private:
+  RgbRaster& raster_;
+  double scale_;
+  PictureWork& work_;
+};
+
+// Opacity per pixel column of a surface's stripes across x: (0.25 + 0.75 gain)(0.3 + 0.7 pattern).
+class StripeAlpha {
+ public:
+  StripeAlpha(const Surface& s, double scale, int first, int last) : first_(first) {
+    const double base = 0.25 + 0.75 * s.gain;
+    alpha_.resize(static_cast<std::size_t>(last - first + 1));
+    for (int px = first; px <= last; ++px) {
+      const double x_mm = (px + 0.5) / scale;
+      alpha_[static_cast<std::size_t>(px - first)] =
+          static_cast<float>(base * (0.3 + 0.7 * pattern_value(s.pattern, x_mm / s.period_mm)));
     }
   }
+  float operator()(int px) const { return alpha_[static_cast<std::size_t>(px - first_)]; }
+
+ private:
+  int first_;
+  std::vector<float> alpha_;
+};
+
+// --- dots ------------------------------------------------------------------------------------------
+
+void draw_dot(Painter& painter, const Dot& d) {
+  const double s = painter.scale();
+  const double cx = d.x_mm * s, cy = d.y_mm * s, r = d.radius_mm * s;
+  const float alpha = static_cast<float>(0.35 + 0.65 * d.gain);
+  const double outer = r + 0.5, inner = r - 0.5;
+  int y0 = 0, y1 = 0;
+  if (!pixel_span(cy - outer, cy + outer, painter.height(), y0, y1)) return;
+  for (int py = y0; py <= y1; ++py) {
+    const double dy = py + 0.5 - cy;
+    const double out2 = outer * outer - dy * dy;
+    if (!(out2 > 0.0)) continue;
+    const double half_out = std::sqrt(out2);
+    int x0 = 0, x1 = 0;
+    if (!pixel_span(cx - half_out, cx + half_out, painter.width(), x0, x1)) continue;
+    const double in2 = inner > 0.0 ? inner * inner - dy * dy : -1.0;
+    const double half_in = in2 > 0.0 ? std::sqrt(in2) : -1.0;
+    std::uint8_t* row = painter.row(py);
+    painter.work().pixels += static_cast<std::uint64_t>(x1 - x0 + 1);
+    for (int px = x0; px <= x1; ++px) {
+      const double dx = px + 0.5 - cx;
+      const float c = std::abs(dx) <= half_in ? 1.0f : coverage_of(std::sqrt(dx * dx + dy * dy) - r);
+      Painter::blend(row + 3 * px, kDotColour, c * alpha);
+    }
+  }
+}
+
+// --- lines -----------------------------------------------------------------------------------------
+
+// Clips the segment (x1,y1)-(x2,y2) to the box [lo_x, hi_x] x [lo_y, hi_y] (Liang-Barsky) in long
+// double, where coordinates near the largest double cannot overflow. Returns false when nothing is
+// left; t0 is the parameter of the clipped start.
+bool clip_segment(long double& x1, long double& y1, long double& x2, long double& y2, long double lo_x,
+                  long double hi_x, long double lo_y, long double hi_y, long double& t0) {
+  const long double dx = x2 - x1, dy = y2 - y1;
+  long double t_in = 0.0L, t_out = 1.0L;
+  const auto edge = [&](long double p, long double q) {  // p t <= q
+    if (p == 0.0L) return q >= 0.0L;
+    const long double t = q / p;
+    if (p < 0.0L) t_in = std::max(t_in, t);
+    else t_out = std::min(t_out, t);
+    return t_in <= t_out;
+  };
+  if (!edge(-dx, x1 - lo_x) || !edge(dx, hi_x - x1) || !edge(-dy, y1 - lo_y) || !edge(dy, hi_y - y1)) return false;
+  const long double sx = x1, sy = y1;
+  x1 = sx + t_in * dx;
+  y1 = sy + t_in * dy;
+  x2 = sx + t_out * dx;
+  y2 = sy + t_out * dy;
+  t0 = t_in;
+  return true;
+}
+
+// The open interval of X where a horizontal line at height y is closer than `radius` to the
+// segment a-b (a capsule is convex: the union of its end discs and its strip is one interval).
+bool capsule_span(double ax, double ay, double bx, double by, double radius, double y, double& lo, double& hi) {
+  lo = INFINITY;
+  hi = -INFINITY;
+  if (!(radius > 0.0)) return false;
+  const auto disc = [&](double cx, double cy) {
+    const double h2 = radius * radius - (y - cy) * (y - cy);
+    if (h2 <= 0.0) return;
+    const double h = std::sqrt(h2);
+    lo = std::min(lo, cx - h);
+    hi = std::max(hi, cx + h);
+  };
+  disc(ax, ay);
+  disc(bx, by);
+  const double dx = bx - ax, dy = by - ay;
+  const double length = std::sqrt(dx * dx + dy * dy);
+  if (length > 0.0) {
+    const double ux = dx / length, uy = dy / length;
+    // Perpendicular distance n.(p - a) with n = (-uy, ux), and position along u.(p - a) in [0, length].
+    double s_lo = -INFINITY, s_hi = INFINITY;
+    const auto within = [&](double k, double c, double lower, double upper) {  // lower < k X + c < upper
+      if (k == 0.0) {
+        if (!(c > lower && c < upper)) s_hi = -INFINITY;
+        return;
+      }
+      double a = (lower - c) / k, b = (upper - c) / k;
+      if (a > b) std::swap(a, b);
+      s_lo = std::max(s_lo, a);
+      s_hi = std::min(s_hi, b);
+    };
+    within(-uy, ux * (y - ay) + uy * ax, -radius, radius);
+    within(ux, uy * (y - ay) - ux * ax, 0.0, length);
+    if (s_lo < s_hi) {
+      lo = std::min(lo, s_lo);
+      hi = std::max(hi, s_hi);
+    }
+  }
+  return lo < hi;
 }
 
 void draw_line(Painter& painter, const Line& l) {
-  const double half = l.width_mm / 2.0;
+  const double s = painter.scale();
   // Colour by frequency on a log scale from 20 Hz to 1000 Hz: orange, crimson, violet.
   const double t = std::clamp(std::log(std::max(l.frequency_hz, 20.0) / 20.0) / std::log(50.0), 0.0, 1.0);
   const Rgb base = t < 0.5 ? mix(kLowFrequencyColour, kMidFrequencyColour, 2.0 * t)
                            : mix(kMidFrequencyColour, kHighFrequencyColour, 2.0 * t - 1.0);
+  const double base_alpha = 0.35 + 0.65 * l.gain;
   // Ripple along the stroke: 2 mm wavelength at 175 Hz, inversely proportional to frequency.
-  const double ripple_mm = 350.0 / l.frequency_hz;
-  const double dx = l.x2_mm - l.x1_mm;
-  const double dy = l.y2_mm - l.y1_mm;
-  const double stroke_mm = length(dx, dy);
-  const auto colour = [&](double x, double y, double& alpha) {
-    const double along = stroke_mm > 0.0 ? ((x - l.x1_mm) * dx + (y - l.y1_mm) * dy) / stroke_mm : 0.0;
-    const double ripple = 0.5 + 0.5 * std::cos(2.0 * std::numbers::pi * along / ripple_mm);
-    alpha = (0.35 + 0.65 * l.gain) * (0.7 + 0.3 * ripple);
-    return base;
-  };
-  painter.fill({std::min(l.x1_mm, l.x2_mm) - half, std::min(l.y1_mm, l.y2_mm) - half,
-                std::max(l.x1_mm, l.x2_mm) + half, std::max(l.y1_mm, l.y2_mm) + half},
-               [&](double x, double y) { return segment_distance(x, y, l) - half; }, colour);
+  const double ripple_px = 350.0 / l.frequency_hz * s;
+  const double radius = l.width_mm / 2.0 * s;
+  const double outer = radius + 0.5, inner = radius - 0.5;
+
+  // The part of the segment that can reach the canvas, in finite pixel coordinates.
+  long double ax = static_cast<long double>(l.x1_mm) * s, ay = static_cast<long double>(l.y1_mm) * s;
+  long double bx = static_cast<long double>(l.x2_mm) * s, by = static_cast<long double>(l.y2_mm) * s;
+  const long double full_length = std::sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay));
+  const long double margin = static_cast<long double>(outer) + 2.0L;
+  long double t0 = 0.0L;
+  if (!clip_segment(ax, ay, bx, by, -margin, painter.width() + margin, -margin, painter.height() + margin, t0)) return;
+  // The ripple keeps its phase from the segment's real start.
+  const double phase0 = ripple_px > 0.0 ? static_cast<double>(std::fmod(t0 * full_length, static_cast<long double>(ripple_px)) /
+                                                              static_cast<long double>(ripple_px))
+                                        : 0.0;
+  const double x1 = static_cast<double>(ax), y1 = static_cast<double>(ay);
+  const double x2 = static_cast<double>(bx), y2 = static_cast<double>(by);
+  const double dx = x2 - x1, dy = y2 - y1;
+  const double length2 = dx * dx + dy * dy;
+  const double length = std::sqrt(length2);
+  const double ux = length > 0.0 ? dx / length : 0.0, uy = length > 0.0 ? dy / length : 0.0;
+  const CosTable& cosine = cos_table();
+
+  int row0 = 0, row1 = 0;
+  if (!pixel_span(std::min(y1, y2) - outer, std::max(y1, y2) + outer, painter.height(), row0, row1)) return;
+  for (int py = row0; py <= row1; ++py) {
+    const double y = py + 0.5;
+    double lo = 0, hi = 0;
+    if (!capsule_span(x1, y1, x2, y2, outer, y, lo, hi)) continue;
+    int c0 = 0, c1 = 0;
+    if (!pixel_span(lo, hi, painter.width(), c0, c1)) continue;
+    double in_lo = 0, in_hi = 0;
+    const bool has_inner = inner > 0.0 && capsule_span(x1, y1, x2, y2, inner, y, in_lo, in_hi);
+    std::uint8_t* row = painter.row(py);
+    painter.work().pixels += static_cast<std::uint64_t>(c1 - c0 + 1);
+    const double along_y = (y - y1) * uy;
+    for (int px = c0; px <= c1; ++px) {
+      const double x = px + 0.5;
+      float c = 1.0f;
+      if (!(has_inner && x >= in_lo && x <= in_hi)) {
+        double tt = length2 > 0.0 ? ((x - x1) * dx + (y - y1) * dy) / length2 : 0.0;
+        tt = std::clamp(tt, 0.0, 1.0);
+        const double ex = x - (x1 + tt * dx), ey = y - (y1 + tt * dy);
+        c = coverage_of(std::sqrt(ex * ex + ey * ey) - radius);
+      }
+      const double along = (x - x1) * ux + along_y;
+      const float ripple = 0.5f + 0.5f * cosine(phase0 + along / ripple_px);
+      Painter::blend(row + 3 * px, base, c * static_cast<float>(base_alpha) * (0.7f + 0.3f * ripple));
+    }
+  }
 }
 
-void draw_dot(Painter& painter, const Dot& d) {
-  const auto colour = [&d](double, double, double& alpha) {
-    alpha = 0.35 + 0.65 * d.gain;
-    return kDotColour;
-  };
-  painter.fill({d.x_mm - d.radius_mm, d.y_mm - d.radius_mm, d.x_mm + d.radius_mm, d.y_mm + d.radius_mm},
-               [&d](double x, double y) { return length(x - d.x_mm, y - d.y_mm) - d.radius_mm; }, colour);
+// --- rectangles and ellipses ---------------------------------------------------------------------
+
+void draw_rect(Painter& painter, const Surface& s) {
+  const double k = painter.scale();
+  const double x0 = s.x_mm * k, y0 = s.y_mm * k;
+  const double x1 = (s.x_mm + s.width_mm) * k, y1 = (s.y_mm + s.height_mm) * k;
+  const double cx = (x0 + x1) / 2.0, cy = (y0 + y1) / 2.0, hx = (x1 - x0) / 2.0, hy = (y1 - y0) / 2.0;
+  int r0 = 0, r1 = 0, c0 = 0, c1 = 0;
+  if (!pixel_span(y0 - 0.5, y1 + 0.5, painter.height(), r0, r1)) return;
+  if (!pixel_span(x0 - 0.5, x1 + 0.5, painter.width(), c0, c1)) return;
+  const StripeAlpha alpha(s, k, c0, c1);
+  for (int py = r0; py <= r1; ++py) {
+    const double qy = std::abs(py + 0.5 - cy) - hy;
+    std::uint8_t* row = painter.row(py);
+    painter.work().pixels += static_cast<std::uint64_t>(c1 - c0 + 1);
+    for (int px = c0; px <= c1; ++px) {
+      const double qx = std::abs(px + 0.5 - cx) - hx;
+      float c = 1.0f;
+      if (qx > -0.5 || qy > -0.5) {
+        const double ox = std::max(qx, 0.0), oy = std::max(qy, 0.0);
+        c = coverage_of(std::sqrt(ox * ox + oy * oy) + std::min(std::max(qx, qy), 0.0));
+      }
+      Painter::blend(row + 3 * px, kSurfaceColour, c * alpha(px));
+    }
+  }
+}
+
+void draw_ellipse(Painter& painter, const Surface& s) {
+  const double k = painter.scale();
+  const double cx = s.cx_mm * k, cy = s.cy_mm * k, rx = s.rx_mm * k, ry = s.ry_mm * k;
+  // The ramp lies between the ellipses with radii 1.5 px smaller and larger; inside the smaller
+  // one every pixel is covered.
+  const double ox = rx + 1.5, oy = ry + 1.5, ix = rx - 1.5, iy = ry - 1.5;
+  int r0 = 0, r1 = 0, c0 = 0, c1 = 0;
+  if (!pixel_span(cy - oy, cy + oy, painter.height(), r0, r1)) return;
+  if (!pixel_span(cx - ox, cx + ox, painter.width(), c0, c1)) return;
+  const StripeAlpha alpha(s, k, c0, c1);
+  for (int py = r0; py <= r1; ++py) {
+    const double dy = py + 0.5 - cy;
+    const double wo = 1.0 - (dy / oy) * (dy / oy);
+    if (!(wo > 0.0)) continue;
+    const double half_out = ox * std::sqrt(wo);
+    int x0 = 0, x1 = 0;
+    if (!pixel_span(cx - half_out, cx + half_out, painter.width(), x0, x1)) continue;
+    const double wi = ix > 0.0 && iy > 0.0 ? 1.0 - (dy / iy) * (dy / iy) : -1.0;
+    const double half_in = wi > 0.0 ? ix * std::sqrt(wi) : -1.0;
+    std::uint8_t* row = painter.row(py);
+    painter.work().pixels += static_cast<std::uint64_t>(x1 - x0 + 1);
+    const double v = dy / ry;
+    for (int px = x0; px <= x1; ++px) {
+      const double dx = px + 0.5 - cx;
+      float c = 1.0f;
+      if (!(std::abs(dx) <= half_in)) {
+        // First-order distance to the ellipse: (k - 1) / |grad k| with k = |(dx/rx, dy/ry)|.
+        const double u = dx / rx;
+        const double kk = std::sqrt(u * u + v * v);
+        if (kk > 0.0) {
+          const double grad = std::sqrt((u / rx) * (u / rx) + (v / ry) * (v / ry)) / kk;
+          c = coverage_of((kk - 1.0) / grad);
+        }
+      }
+      Painter::blend(row + 3 * px, kSurfaceColour, c * alpha(px));
+    }
+  }
+}
+
+// --- polygons --------------------------------------------------------------------------------------
+
+// An edge piece inside the canvas, y0 < y1, with the winding direction of the original edge.
+struct Edge {
+  double x0, y0, x1, y1;
+  float dir;
+};
+
+// Clips one polygon edge to the canvas rows [0, height] and columns [0, width]: what lies left of
+// the canvas becomes a vertical piece at x = 0 (it still winds every pixel to its right), what lies
+// right of it is dropped (it winds nothing on the canvas, but the winding of the pieces left of it
+// then reaches the right border: `to_right` is set).
+void add_edge(std::vector<Edge>& edges, long double ax, long double ay, long double bx, long double by, int width,
+              int height, bool& to_right) {
+  if (ay == by) return;
+  float dir = 1.0f;
+  if (ay > by) {
+    std::swap(ax, bx);
+    std::swap(ay, by);
+    dir = -1.0f;
+  }
+  const long double top = std::max(ay, 0.0L), bottom = std::min(by, static_cast<long double>(height));
+  if (!(top < bottom)) return;
+  const long double slope = (bx - ax) / (by - ay);  // dx per dy, finite in long double
+  const auto x_at = [&](long double y) { return ax + (y - ay) * slope; };
+  long double xt = x_at(top), xb = x_at(bottom);
+  // Split at x = 0 and x = width.
+  const long double w = static_cast<long double>(width);
+  std::array<long double, 4> ys{top, bottom, top, top};
+  std::size_t n = 2;
+  for (const long double x_cut : {0.0L, w}) {
+    if ((xt - x_cut) * (xb - x_cut) < 0.0L && slope != 0.0L) ys[n++] = ay + (x_cut - ax) / slope;
+  }
+  std::sort(ys.begin(), ys.begin() + static_cast<std::ptrdiff_t>(n));
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const long double y0 = ys[i], y1 = ys[i + 1];
+    if (!(y0 < y1)) continue;
+    long double x0 = x_at(y0), x1 = x_at(y1);
+    const long double mid = (x0 + x1) / 2.0L;
+    if (mid >= w) {
+      to_right = true;
+      continue;
+    }
+    if (mid <= 0.0L) x0 = x1 = 0.0L;
+    x0 = std::clamp(x0, 0.0L, w);
+    x1 = std::clamp(x1, 0.0L, w);
+    edges.push_back({static_cast<double>(x0), static_cast<double>(y0), static_cast<double>(x1), static_cast<double>(y1), dir});
+  }
+}
+
+// Adds the signed area of an edge piece within one pixel row to the accumulation buffer: the
+// coverage of pixel c is the running sum of acc[0..c] (the piece lies within [y0, y1] of height
+// at most 1, x in [0, width]).
+void accumulate(std::vector<double>& acc, double xa, double ya, double xb, double yb, double dir) {
+  const double d = (yb - ya) * dir;
+  const double x0 = std::min(xa, xb), x1 = std::max(xa, xb);
+  const double x0floor = std::floor(x0);
+  const auto x0i = static_cast<std::size_t>(x0floor);
+  const double x1ceil = std::ceil(x1);
+  const auto x1i = static_cast<std::size_t>(x1ceil);
+  if (x1i <= x0i + 1) {
+    const double xmf = 0.5 * (xa + xb) - x0floor;
+    acc[x0i] += d - d * xmf;
+    acc[x0i + 1] += d * xmf;
+    return;
+  }
+  const double inv = 1.0 / (x1 - x0);
+  const double x0f = x0 - x0floor;
+  const double a0 = 0.5 * inv * (1.0 - x0f) * (1.0 - x0f);
+  const double x1f = x1 - x1ceil + 1.0;
+  const double am = 0.5 * inv * x1f * x1f;
+  acc[x0i] += d * a0;
+  if (x1i == x0i + 2) {
+    acc[x0i + 1] += d * (1.0 - a0 - am);
+  } else {
+    const double a1 = inv * (1.5 - x0f);
+    acc[x0i + 1] += d * (a1 - a0);
+    for (std::size_t xi = x0i + 2; xi + 1 < x1i; ++xi) acc[xi] += d * inv;
+    const double a2 = a1 + static_cast<double>(x1i - x0i - 3) * inv;
+    acc[x1i - 1] += d * (1.0 - a2 - am);
+  }
+  acc[x1i] += d * am;
+}
+
+void draw_polygon(Painter& painter, const Surface& s) {
+  if (s.points.size() < 3) return;
+  const int width = painter.width(), height = painter.height();
+  const long double k = painter.scale();
+  std::vector<Edge> edges;
+  edges.reserve(s.points.size() + 4);
+  bool to_right = false;
+  for (std::size_t i = 0, j = s.points.size() - 1; i < s.points.size(); j = i++) {
+    add_edge(edges, s.points[j].x_mm * k, s.points[j].y_mm * k, s.points[i].x_mm * k, s.points[i].y_mm * k, width,
+             height, to_right);
+  }
+  if (edges.empty()) return;
+  // Edges sorted once by their top; the active list holds those crossing the current row.
+  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.y0 < b.y0; });
+  double min_x = width, max_x = 0.0, max_y = 0.0;
+  for (const Edge& e : edges) {
+    min_x = std::min({min_x, e.x0, e.x1});
+    max_x = std::max({max_x, e.x0, e.x1});
+    max_y = std::max(max_y, e.y1);
+  }
+  const int c0 = static_cast<int>(std::floor(min_x));
+  const int c1 = to_right ? width - 1 : std::min(width - 1, static_cast<int>(std::ceil(max_x)));
+  if (c0 > c1) return;
+  const StripeAlpha alpha(s, painter.scale(), c0, c1);
+  std::vector<double> acc(static_cast<std::size_t>(width) + 2, 0.0);
+  std::vector<std::size_t> active;
+  std::size_t next = 0;
+  const int row0 = static_cast<int>(std::floor(edges.front().y0));
+  const int row1 = std::min(height - 1, static_cast<int>(std::ceil(max_y)));
+  for (int py = row0; py <= row1; ++py) {
+    const double top = py, bottom = py + 1.0;
+    while (next < edges.size() && edges[next].y0 < bottom) active.push_back(next++);
+    std::erase_if(active, [&](std::size_t i) { return edges[i].y1 <= top; });
+    if (active.empty()) continue;
+    for (const std::size_t i : active) {
+      const Edge& e = edges[i];
+      ++painter.work().edge_steps;
+      const double ya = std::max(e.y0, top), yb = std::min(e.y1, bottom);
+      if (!(ya < yb)) continue;
+      const double slope = (e.x1 - e.x0) / (e.y1 - e.y0);
+      const double xa = std::clamp(e.x0 + (ya - e.y0) * slope, 0.0, static_cast<double>(width));
+      const double xb = std::clamp(e.x0 + (yb - e.y0) * slope, 0.0, static_cast<double>(width));
+      accumulate(acc, xa, ya, xb, yb, e.dir);
+    }
+    std::uint8_t* row = painter.row(py);
+    painter.work().pixels += static_cast<std::uint64_t>(c1 - c0 + 1);
+    double winding = 0.0;
+    for (int px = c0; px <= c1; ++px) {
+      winding += acc[static_cast<std::size_t>(px)];
+      acc[static_cast<std::size_t>(px)] = 0.0;
+      // Even-odd: the coverage folds the winding area into [0, 1].
+      double c = std::fmod(std::abs(winding), 2.0);
+      if (c > 1.0) c = 2.0 - c;
+      if (c > 1e-6) Painter::blend(row + 3 * px, kSurfaceColour, static_cast<float>(c) * alpha(px));
+    }
+    std::fill(acc.begin() + c1 + 1, acc.end(), 0.0);
+  }
 }
 
 void draw_elements(Painter& painter, const std::vector<Element>& elements) {
@@ -202,7 +499,11 @@ void draw_elements(Painter& painter, const std::vector<Element>& elements) {
     } else if (const auto* l = std::get_if<Line>(&e.body)) {
       draw_line(painter, *l);
     } else if (const auto* s = std::get_if<Surface>(&e.body)) {
-      draw_surface(painter, *s);
+      switch (s->shape) {
+        case SurfaceShape::rect: draw_rect(painter, *s); break;
+        case SurfaceShape::ellipse: draw_ellipse(painter, *s); break;
+        case SurfaceShape::polygon: draw_polygon(painter, *s); break;
+      }
     } else if (const auto* g = std::get_if<Group>(&e.body)) {
       draw_elements(painter, g->children);
     }
@@ -219,25 +520,24 @@ std::optional<std::string> picture_size(const Image& image, double scale_px_per_
   const double h = std::max(1.0, std::ceil(image.height_mm * scale_px_per_mm));
   if (!(w * h <= kMaxPngPixels)) {
     return "a PNG of " + format_decimal(w) + " x " + format_decimal(h) + " pixels exceeds the limit of " +
-           format_decimal(kMaxPngPixels) + " pixels; use a smaller scale";
+           format_decimal(kMaxPngPixels) + " pixels; use a smaller scale (limit " + format_decimal(kMaxPngPixels) + ")";
   }
   size.width_px = static_cast<int>(w);
   size.height_px = static_cast<int>(h);
   return std::nullopt;
 }
 
-std::optional<std::string> draw_picture(const Image& image, double scale_px_per_mm, RgbRaster& raster) {
+std::optional<std::string> draw_picture(const Image& image, double scale_px_per_mm, RgbRaster& raster,
+                                        PictureWork* work) {
   PictureSize size;
   if (auto error = picture_size(image, scale_px_per_mm, size)) return error;
   raster.width = size.width_px;
   raster.height = size.height_px;
-  raster.rgb.assign(static_cast<std::size_t>(size.width_px) * static_cast<std::size_t>(size.height_px) * 3, 0);
-  for (std::size_t i = 0; i < raster.rgb.size(); i += 3) {
-    raster.rgb[i] = static_cast<std::uint8_t>(kBackground.r);
-    raster.rgb[i + 1] = static_cast<std::uint8_t>(kBackground.g);
-    raster.rgb[i + 2] = static_cast<std::uint8_t>(kBackground.b);
-  }
-  Painter painter(raster, scale_px_per_mm);
+  raster.rgb.assign(static_cast<std::size_t>(size.width_px) * static_cast<std::size_t>(size.height_px) * 3,
+                    static_cast<std::uint8_t>(kBackground.r));
+  static_assert(kBackground.r == kBackground.g && kBackground.g == kBackground.b, "one fill value");
+  PictureWork unused;
+  Painter painter(raster, scale_px_per_mm, work != nullptr ? *work : unused);
   draw_elements(painter, image.children);
   return std::nullopt;
 }

@@ -3,6 +3,7 @@
 // white canvas, anti-aliased primitives in paint order. Dots are dark filled discs, lines are
 // stroked capsules coloured by frequency with a ripple whose wavelength shrinks as frequency
 // grows, surfaces are filled with stripes of their pattern at their period.
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -20,7 +21,14 @@ struct PictureSize {
 // Checks the scale (finite, > 0) and the pixel count limit (kMaxPngPixels); returns an error or the size.
 std::optional<std::string> picture_size(const Image& image, double scale_px_per_mm, PictureSize& size);
 
+// The work a drawing did, counted (never timed) so that tests can check how it grows.
+struct PictureWork {
+  std::uint64_t pixels = 0;      // pixels whose coverage was computed
+  std::uint64_t edge_steps = 0;  // polygon edges visited (per pixel or per pixel row)
+};
+
 // Draws the image. Returns an error message when the scale or the size is not acceptable.
-std::optional<std::string> draw_picture(const Image& image, double scale_px_per_mm, RgbRaster& raster);
+std::optional<std::string> draw_picture(const Image& image, double scale_px_per_mm, RgbRaster& raster,
+                                        PictureWork* work = nullptr);
 
 }  // namespace vimg
