@@ -1,7 +1,9 @@
 // Player engine benchmarks: cost per output sample against the number of primitives and fingers
-// (grid index and naive linear scan), event-to-output latency, and real-time loop jitter.
+// (grid index and naive linear scan), event-to-first-sample latency and real-time loop jitter
+// with 1 ms (8-sample) and 8 ms (64-sample) blocks, at normal priority and SCHED_FIFO.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -12,8 +14,10 @@
 #include "player/contact_mixer.hpp"
 #include "player/realtime_renderer.hpp"
 #include "player/scene.hpp"
-#include "realtime/soft_limit.hpp"
 #include "primitives/image.hpp"
+#include "realtime/loop_telemetry.hpp"
+#include "realtime/realtime_priority.hpp"
+#include "realtime/soft_limit.hpp"
 
 namespace {
 
@@ -130,8 +134,27 @@ class LatencySink final : public DriveSink {
   std::atomic<double> seen_s{0.0};
 };
 
+// p50 / p99 by the project's one definition (nearest rank on 1 us bins, realtime/loop_telemetry).
+struct Percentiles {
+  void add(double value_s) {
+    const auto us = static_cast<std::size_t>(std::max(0.0, value_s * 1e6));
+    ++bins[std::min(bins.size() - 1, us)];
+    max_s = std::max(max_s, value_s);
+  }
+  double percentile_s(double q) const { return nearest_rank_percentile(bins.data(), bins.size(), q) * 1e-6; }
+  std::vector<std::uint32_t> bins = std::vector<std::uint32_t>(LoopTelemetry::kBins, 0);
+  double max_s = 0.0;
+};
+
+// Labels a result with the scheduling the render thread really had.
+void label_priority(benchmark::State& state, const LoopStats& s) {
+  state.SetLabel(describe(s.priority));
+  state.counters["fifo"] = s.realtime_priority ? 1.0 : 0.0;
+}
+
 // Time from push_event() of a touch onto a surface to the sink receiving the first block that
-// reflects it (manual time). Block: 64 samples at 8 kHz = 8 ms. Arg: SCHED_FIFO priority.
+// reflects it (the first affected drive sample exists then), touches placed at random phases of
+// the block; manual time. Args: block samples at 8 kHz, SCHED_FIFO priority (0: normal).
 void BM_EventToFirstSampleLatency(benchmark::State& state) {
   Image img;
   Surface s;
@@ -141,42 +164,48 @@ void BM_EventToFirstSampleLatency(benchmark::State& state) {
   img.children.push_back(Element{"s", s, {}, {}, 0});
   LatencySink sink;
   RealtimeOptions o;
-  o.realtime_priority = static_cast<int>(state.range(0));
+  o.sample_rate_hz = 8000.0;
+  o.block_samples = static_cast<std::size_t>(state.range(0));
+  o.realtime_priority = static_cast<int>(state.range(1));
   RealtimeRenderer r(sink, o);
   r.set_scene(compile_scene(img));
   if (r.start()) {
     state.SkipWithError("cannot start");
     return;
   }
+  const auto block_us = static_cast<int>(1e6 * static_cast<double>(r.block_samples()) / r.sample_rate_hz());
   std::mt19937 rng(5);
-  std::uniform_int_distribution<int> wait_us(0, 8000);
-  std::vector<double> latencies;
+  std::uniform_int_distribution<int> wait_us(0, block_us);
+  Percentiles latency;
   for (auto _ : state) {
     while (!sink.silent.load()) std::this_thread::sleep_for(std::chrono::microseconds(200));
     std::this_thread::sleep_for(std::chrono::microseconds(wait_us(rng)));  // random phase in the block
     sink.armed.store(true);
     const double t0 = monotonic_s();
-    // A moving touch: down then a move 2 ms later in time (velocity 100 mm/s), both stamped now.
+    // A moving touch: down then a move 2 ms later in time (velocity 100 mm/s), both pushed now.
     TouchEvent down{t0 - 0.002, 0, TouchPhase::down, 50.0, 50.0, 1.0};
     TouchEvent move{t0, 0, TouchPhase::move, 50.2, 50.0, 1.0};
     r.push_event(down);
     r.push_event(move);
-    while (sink.armed.load()) std::this_thread::sleep_for(std::chrono::microseconds(50));
-    const double latency = sink.seen_s.load() - t0;
-    latencies.push_back(latency);
-    state.SetIterationTime(latency);
+    while (sink.armed.load()) std::this_thread::sleep_for(std::chrono::microseconds(20));
+    const double latency_s = sink.seen_s.load() - t0;
+    latency.add(latency_s);
+    state.SetIterationTime(latency_s);
     TouchEvent up{monotonic_s(), 0, TouchPhase::up, 50.2, 50.0, 1.0};
     r.push_event(up);
   }
+  const LoopStats stats = r.stats();
   r.stop();
-  std::sort(latencies.begin(), latencies.end());
-  if (!latencies.empty()) {
-    state.counters["p50_ms"] = latencies[latencies.size() / 2] * 1e3;
-    state.counters["max_ms"] = latencies.back() * 1e3;
-  }
+  state.counters["p50_ms"] = latency.percentile_s(0.50) * 1e3;
+  state.counters["p99_ms"] = latency.percentile_s(0.99) * 1e3;
+  state.counters["max_ms"] = latency.max_s * 1e3;
   state.counters["block_ms"] = 1e3 * static_cast<double>(r.block_samples()) / r.sample_rate_hz();
+  label_priority(state, stats);
 }
-BENCHMARK(BM_EventToFirstSampleLatency)->ArgName("fifo_priority")->Arg(0)->Arg(80)->UseManualTime()->Iterations(200)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EventToFirstSampleLatency)
+    ->ArgNames({"block", "fifo_priority"})
+    ->Args({8, 0})->Args({8, 80})->Args({64, 0})->Args({64, 80})
+    ->UseManualTime()->Iterations(500)->Unit(benchmark::kMillisecond);
 
 class NullSink final : public DriveSink {
  public:
@@ -186,13 +215,15 @@ class NullSink final : public DriveSink {
 };
 
 // The real-time loop for 3 s at 8 kHz over 10 000 primitives with 10 fingers moving (120 Hz
-// events): wake-up lateness against the absolute deadlines.
-// Arg: SCHED_FIFO priority (0: normal scheduling).
+// events): wake-up lateness against the absolute deadlines, and the render thread's own time per
+// block. Args: block samples, SCHED_FIFO priority (0: normal scheduling).
 void BM_RealtimeLoopJitter(benchmark::State& state) {
   const Image img = random_image(10000);
   NullSink sink;
   RealtimeOptions o;
-  o.realtime_priority = static_cast<int>(state.range(0));
+  o.sample_rate_hz = 8000.0;
+  o.block_samples = static_cast<std::size_t>(state.range(0));
+  o.realtime_priority = static_cast<int>(state.range(1));
   RealtimeRenderer r(sink, o);
   r.set_scene(compile_scene(img));
   for (auto _ : state) {
@@ -215,10 +246,19 @@ void BM_RealtimeLoopJitter(benchmark::State& state) {
     state.counters["jitter_p99_us"] = s.jitter_p99_s * 1e6;
     state.counters["jitter_max_us"] = s.jitter_max_s * 1e6;
     state.counters["overruns"] = static_cast<double>(s.overruns);
-    state.counters["fifo"] = s.realtime_priority ? 1.0 : 0.0;
+    state.counters["skips"] = static_cast<double>(s.skips);
+    state.counters["blocks"] = static_cast<double>(s.blocks);
+    state.counters["render_mean_us"] = s.render_mean_s * 1e6;
+    state.counters["render_max_us"] = s.render_max_s * 1e6;
+    state.counters["render_per_sample_us"] = s.render_mean_s * 1e6 / static_cast<double>(s.block_samples);
+    state.counters["contacts"] = static_cast<double>(s.active_contacts);
+    label_priority(state, s);
   }
 }
-BENCHMARK(BM_RealtimeLoopJitter)->ArgName("fifo_priority")->Arg(0)->Arg(80)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RealtimeLoopJitter)
+    ->ArgNames({"block", "fifo_priority"})
+    ->Args({8, 0})->Args({8, 80})->Args({64, 0})->Args({64, 80})
+    ->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -29,7 +29,8 @@ class DriveSink {
   virtual bool paces_stream() const { return false; }
 
   // The smallest block the sink works with (e.g. a device that wants whole FIFO loads); the
-  // renderer never writes smaller blocks. Valid after open(). Files and memory take anything.
+  // real-time renderer never writes smaller blocks. Valid after open(). Files and memory take
+  // anything.
   virtual std::size_t min_block_samples() const { return 1; }
 };
 

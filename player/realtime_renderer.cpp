@@ -73,6 +73,8 @@ std::optional<std::string> RealtimeRenderer::start() {
   block_samples_.store(block, std::memory_order_relaxed);
   impl_->block.assign(block, 0.0f);
   telemetry_.reset();
+  render_total_ns_.store(0, std::memory_order_relaxed);
+  render_max_ns_.store(0, std::memory_order_relaxed);
   measured_rate_hz_.store(0.0, std::memory_order_relaxed);
   stream_offset_s_.store(0.0, std::memory_order_relaxed);
   running_.store(true, std::memory_order_release);
@@ -173,6 +175,12 @@ void RealtimeRenderer::publish_rate(std::int64_t now_ns) {
   }
 }
 
+void RealtimeRenderer::record_render_time(std::int64_t render_ns) {
+  // One writer (the render thread): plain load and store, no read-modify-write needed.
+  render_total_ns_.store(render_total_ns_.load(std::memory_order_relaxed) + render_ns, std::memory_order_relaxed);
+  if (render_ns > render_max_ns_.load(std::memory_order_relaxed)) render_max_ns_.store(render_ns, std::memory_order_relaxed);
+}
+
 void RealtimeRenderer::run() {
   const RealtimePriority priority = request_realtime_priority(options_.realtime_priority);
   priority_requested_.store(priority.requested, std::memory_order_relaxed);
@@ -201,9 +209,11 @@ void RealtimeRenderer::run_on_deadlines() {
   while (!stop_requested_.load(std::memory_order_acquire)) {
     const std::int64_t deadline_ns = deadline_of(k);
     sleep_until_ns(deadline_ns);
-    telemetry_.record_wake(monotonic_ns(), deadline_ns);
+    const std::int64_t woke_ns = monotonic_ns();
+    telemetry_.record_wake(woke_ns, deadline_ns);
     const double t = start_s + static_cast<double>(k * block) / rate;
     render_block(t, 0.0);
+    record_render_time(monotonic_ns() - woke_ns);
     sink_.write(impl_->block, t);
     ++k;
     const std::int64_t after_ns = monotonic_ns();
@@ -231,7 +241,9 @@ void RealtimeRenderer::run_paced_by_sink() {
     const auto expected_ns = static_cast<std::int64_t>(std::llround(clock.to_monotonic_s(t) * 1e9));
     telemetry_.record_wake(woke_ns, expected_ns);
     render_block(t, clock.offset_s());
-    if (static_cast<double>(monotonic_ns() - expected_ns) > block_ns) telemetry_.record_overrun();
+    const std::int64_t rendered_ns = monotonic_ns();
+    record_render_time(rendered_ns - woke_ns);
+    if (static_cast<double>(rendered_ns - expected_ns) > block_ns) telemetry_.record_overrun();
     sink_.write(impl_->block, t);  // blocks on the device: its clock paces the stream
     sample += block;
     publish_rate(monotonic_ns());
@@ -257,6 +269,10 @@ LoopStats RealtimeRenderer::stats() const {
   s.paced_by_sink = paced_.load(std::memory_order_relaxed);
   s.block_samples = block_samples();
   s.stream_offset_s = stream_offset_s_.load(std::memory_order_relaxed);
+  if (t.cycles > 0) {
+    s.render_mean_s = static_cast<double>(render_total_ns_.load(std::memory_order_relaxed)) * 1e-9 / static_cast<double>(t.cycles);
+  }
+  s.render_max_s = static_cast<double>(render_max_ns_.load(std::memory_order_relaxed)) * 1e-9;
   s.scene_generation = scene_generation_.load(std::memory_order_relaxed);
   s.scenes_superseded = scenes_superseded_.load(std::memory_order_relaxed);
   return s;

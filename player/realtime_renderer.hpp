@@ -82,6 +82,10 @@ struct LoopStats {
   bool paced_by_sink = false;      // the sink's clock paces the stream
   std::size_t block_samples = 0;
   double stream_offset_s = 0.0;    // renderer clock minus CLOCK_MONOTONIC (0 with deadlines)
+  // CPU time of one block's rendering (events, tracker, mixers, limiter; not the sink's write()),
+  // wall clock on the render thread: compare with the block's duration.
+  double render_mean_s = 0.0;
+  double render_max_s = 0.0;
   std::uint64_t scene_generation = 0;   // the set_scene() call now playing (0: none yet)
   std::uint64_t scenes_superseded = 0;  // replaced in the mailbox before the render thread took them
 };
@@ -133,6 +137,7 @@ class RealtimeRenderer {
   void run_paced_by_sink();
   void render_block(double block_start_s, double event_offset_s);
   void publish_rate(std::int64_t now_ns);
+  void record_render_time(std::int64_t render_ns);
   void collect_retired();
   void release(const SceneEntry* entry);
 
@@ -159,6 +164,8 @@ class RealtimeRenderer {
   LoopTelemetry telemetry_;
   std::atomic<double> measured_rate_hz_{0.0};
   std::atomic<double> stream_offset_s_{0.0};
+  std::atomic<std::int64_t> render_total_ns_{0};
+  std::atomic<std::int64_t> render_max_ns_{0};
   std::atomic<std::uint64_t> dropped_events_{0};
   std::atomic<std::uint64_t> active_contacts_{0};
   std::atomic<std::uint64_t> scene_generation_{0};

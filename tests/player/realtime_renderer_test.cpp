@@ -48,6 +48,10 @@ TEST(RealtimeRenderer, RunsAtTheRequestedRate) {
   EXPECT_EQ(sink.samples().size() % r.block_samples(), 0u);
   EXPECT_LE(s.jitter_p50_s, s.jitter_p99_s);
   EXPECT_LE(s.jitter_p99_s, s.jitter_max_s + 10e-6);
+  EXPECT_EQ(s.block_samples, 8u);  // 1 ms
+  EXPECT_FALSE(s.paced_by_sink);
+  EXPECT_GT(s.render_max_s, 0.0);
+  EXPECT_LE(s.render_mean_s, s.render_max_s);
   EXPECT_TRUE(sink.closed());
   for (float v : sink.samples()) ASSERT_EQ(v, 0.0f);  // no scene, no touch: silence
 }
