@@ -198,14 +198,7 @@ int run(const PlayerArgs& args) {
 int main(int argc, char** argv) {
   using namespace vimg::player_app;
   const ArgsResult parsed = parse_player_args(std::vector<std::string>(argv + 1, argv + argc));
-  if (!parsed.args) {
-    if (parsed.error.empty()) {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
-    std::fprintf(stderr, "vimg-player: %s\n%s", parsed.error.c_str(), kUsage);
-    return 2;
-  }
+  if (!parsed.args) return parsed.exit_code;
   try {
     return run(*parsed.args);
   } catch (const std::exception& error) {

@@ -1,75 +1,65 @@
 #include "apps/vimg-player/player_args.hpp"
 
 #include <charconv>
-#include <cmath>
 #include <cstdio>
 
-namespace vimg::player_app {
+#include "cmdline/command_line.hpp"
 
+namespace vimg::player_app {
 namespace {
-bool parse_double(const std::string& text, double& value) {
-  const auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return !text.empty() && status == std::errc() && end == text.data() + text.size() && std::isfinite(value);
+
+bool parse_window(const std::string& text, int& width, int& height) {
+  const auto x = text.find('x');
+  if (x == std::string::npos) return false;
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  const auto w = std::from_chars(begin, begin + x, width);
+  const auto h = std::from_chars(begin + x + 1, end, height);
+  return w.ec == std::errc() && w.ptr == begin + x && h.ec == std::errc() && h.ptr == end && width >= 64 && height >= 64;
 }
-bool parse_int(const std::string& text, int& value) {
-  const auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return !text.empty() && status == std::errc() && end == text.data() + text.size();
-}
+
 }  // namespace
 
 ArgsResult parse_player_args(const std::vector<std::string>& arguments) {
-  PlayerArgs args;
-  for (std::size_t i = 0; i < arguments.size(); ++i) {
-    const std::string& argument = arguments[i];
-    auto value = [&](std::string& out) {
-      if (i + 1 >= arguments.size()) return false;
-      out = arguments[++i];
-      return true;
-    };
-    std::string text;
-    if (argument == "--help" || argument == "-h") {
-      return {std::nullopt, ""};
-    } else if (argument == "--calibrate") {
-      args.calibrate = true;
-    } else if (argument == "--output") {
-      if (!value(args.output)) return {std::nullopt, "--output needs a value"};
-    } else if (argument == "--actuator") {
-      if (!value(text)) return {std::nullopt, "--actuator needs a file"};
-      args.actuator_path = text;
-    } else if (argument == "--px-per-mm") {
-      double scale = 0.0;
-      if (!value(text) || !parse_double(text, scale) || scale <= 0.0) {
-        return {std::nullopt, "--px-per-mm needs a number above 0"};
-      }
-      args.px_per_mm = scale;
-    } else if (argument == "--rate") {
-      if (!value(text) || !parse_double(text, args.rate_hz) || args.rate_hz < 1.0 || args.rate_hz > 48000.0) {
-        return {std::nullopt, "--rate needs a number of Hz in 1..48000"};
-      }
-    } else if (argument == "--realtime-priority") {
-      int priority = -1;
-      if (!value(text) || !parse_int(text, priority) || priority < 0 || priority > 99) {
-        return {std::nullopt, "--realtime-priority needs a whole number in 0..99"};
-      }
-      args.realtime_priority = priority;
-    } else if (argument == "--window") {
-      int width = 0, height = 0;
-      if (!value(text) || std::sscanf(text.c_str(), "%dx%d", &width, &height) != 2 || width < 64 || height < 64) {
-        return {std::nullopt, "--window needs WIDTHxHEIGHT, e.g. 800x600"};
-      }
-      args.window_size = std::pair{width, height};
-    } else if (!argument.empty() && argument[0] == '-') {
-      return {std::nullopt, "unknown option " + argument};
-    } else if (args.image_path.empty()) {
-      args.image_path = argument;
-    } else {
-      return {std::nullopt, "only one IMAGE, not also " + argument};
-    }
+  PlayerArgs a;
+  double px_per_mm = 0.0;
+  std::string window, actuator;
+  CLI::App app("vimg-player: play a vibrotactile image full screen at true size. The mouse is one finger; on a "
+               "touchscreen every finger plays. Esc or Q quits.");
+  cmdline::configure(app, "vimg-player");
+  app.add_option("IMAGE", a.image_path, "a .vimg or .png vibrotactile image");
+  app.add_option("--output", a.output,
+                 "audio | audio:DEVICE | wav:FILE | drv2605l:/dev/i2c-1[,en=gpiochip0:17][,calibration=FILE] | "
+                 "spi:/dev/spidev0.0[,mode=0][,speed=HZ] | hid:VID:PID");
+  app.add_option("--actuator", actuator, "actuator profile (assets/profiles/*.xml); default: ideal, 175 Hz");
+  auto* scale = app.add_option("--px-per-mm", px_per_mm, "screen scale; default: from the display's DPI")
+                    ->check(cmdline::finite_in(0.01, 1000.0));
+  app.add_option("--rate", a.rate_hz, "render rate, Hz")->check(cmdline::finite_in(1.0, 48000.0));
+  app.add_option("--window", window, "a window of WIDTHxHEIGHT pixels instead of full screen")
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            int w = 0, h = 0;
+            return parse_window(v, w, h) ? std::string() : "'" + v + "' is not WIDTHxHEIGHT of at least 64x64";
+          },
+          "WxH"));
+  app.add_option("--realtime-priority", a.realtime_priority,
+                 "SCHED_FIFO priority 1..99 of the render thread, 0 for none (needs CAP_SYS_NICE or an rtprio "
+                 "limit; without it the thread runs normally)")
+      ->check(CLI::Range(0, 99));
+  app.add_flag("--calibrate", a.calibrate, "run the actuator's calibration (DRV2605L auto-calibration), store it, exit");
+  if (const auto code = cmdline::parse(app, arguments)) return {std::nullopt, *code};
+  if (a.image_path.empty() && !a.calibrate) {
+    std::fprintf(stderr, "vimg-player: error: IMAGE is required (or --calibrate)\nRun 'vimg-player --help' for usage.\n");
+    return {std::nullopt, cmdline::kExitUsage};
   }
-  if (args.image_path.empty() && !args.calibrate) {
-    return {std::nullopt, "needs an IMAGE"};
+  if (!actuator.empty()) a.actuator_path = actuator;
+  if (scale->count() > 0) a.px_per_mm = px_per_mm;
+  if (!window.empty()) {
+    int w = 0, h = 0;
+    parse_window(window, w, h);
+    a.window_size = std::pair{w, h};
   }
-  return {args, ""};
+  return {a, cmdline::kExitOk};
 }
 
 }  // namespace vimg::player_app

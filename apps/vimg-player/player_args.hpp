@@ -1,26 +1,12 @@
 #pragma once
-// Command line of vimg-player.
+// Command line of vimg-player (`vimg-player --help` lists it), parsed with the project's
+// conventions (cmdline/command_line.hpp).
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vimg::player_app {
-
-inline constexpr const char* kUsage =
-    "usage: vimg-player IMAGE [--output SPEC] [--actuator PROFILE.xml] [--px-per-mm N] [--rate HZ]\n"
-    "                   [--window WIDTHxHEIGHT] [--realtime-priority N] [--calibrate]\n"
-    "  IMAGE               a .vimg or .png vibrotactile image\n"
-    "  --output SPEC       audio | audio:DEVICE | wav:FILE | drv2605l:/dev/i2c-1[,en=gpiochip0:17]\n"
-    "                      [,calibration=FILE] | spi:/dev/spidev0.0[,mode=0][,speed=HZ] | hid:VID:PID\n"
-    "                      (default: audio)\n"
-    "  --actuator FILE     actuator profile (assets/profiles/*.xml); default: ideal, 175 Hz\n"
-    "  --px-per-mm N       screen scale; default: from the display's DPI\n"
-    "  --rate HZ           render rate; default 8000\n"
-    "  --window WxH        a window instead of full screen\n"
-    "  --realtime-priority N  SCHED_FIFO priority 1..99 of the render thread, 0 for none; default 80\n"
-    "                      (needs CAP_SYS_NICE or an rtprio limit; without it the thread runs normally)\n"
-    "  --calibrate         run the actuator's calibration (DRV2605L auto-calibration), store it, exit\n"
-    "Mouse: the mouse is one finger. Touch: every finger plays. Esc or Q quits.\n";
 
 struct PlayerArgs {
   std::string image_path;
@@ -35,9 +21,10 @@ struct PlayerArgs {
 
 struct ArgsResult {
   std::optional<PlayerArgs> args;
-  std::string error;  // empty with no args: --help
+  int exit_code = 0;  // when args is empty: 0 (help, version) or 2 (usage error), already printed
 };
 
+// The arguments after the program name.
 ArgsResult parse_player_args(const std::vector<std::string>& arguments);
 
 }  // namespace vimg::player_app

@@ -64,7 +64,8 @@ TEST(VimgConventions, NumbersMustBeFiniteAndInRange) {
 // Every program of the project, where this build has it (the sanitizer builds leave out the GUI).
 TEST(ProgramConventions, EveryProgramAnswersHelpVersionAndUsageErrorsAlike) {
   int checked = 0;
-  for (const char* program : {"cli/vimg", "editor/vimg-editor", "apps/probe/vimg-probe"}) {
+  for (const char* program : {"cli/vimg", "editor/vimg-editor", "apps/probe/vimg-probe", "apps/vimg-player/vimg-player",
+                              "apps/force/vimg-force"}) {
     if (!std::filesystem::exists(std::string(VIMG_BINARY_DIR "/") + program)) continue;
     ++checked;
     const std::string name = std::filesystem::path(program).filename().string();

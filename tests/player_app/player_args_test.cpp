@@ -5,41 +5,70 @@
 namespace vimg::player_app {
 namespace {
 
-ArgsResult parse(std::vector<std::string> arguments) { return parse_player_args(arguments); }
+struct Parsed {
+  ArgsResult result;
+  std::string err;
+};
+
+Parsed parse(std::vector<std::string> arguments) {
+  testing::internal::CaptureStderr();
+  testing::internal::CaptureStdout();
+  Parsed p{parse_player_args(arguments), ""};
+  testing::internal::GetCapturedStdout();
+  p.err = testing::internal::GetCapturedStderr();
+  return p;
+}
 
 TEST(PlayerArgs, DefaultsAreAudioAt8kHzWithRealtimePriority) {
-  const ArgsResult r = parse({"image.vimg"});
-  ASSERT_TRUE(r.args.has_value()) << r.error;
-  EXPECT_EQ(r.args->image_path, "image.vimg");
-  EXPECT_EQ(r.args->output, "audio");
-  EXPECT_EQ(r.args->rate_hz, 8000.0);
-  EXPECT_EQ(r.args->realtime_priority, 80);
+  const Parsed r = parse({"image.vimg"});
+  ASSERT_TRUE(r.result.args.has_value()) << r.err;
+  EXPECT_EQ(r.result.args->image_path, "image.vimg");
+  EXPECT_EQ(r.result.args->output, "audio");
+  EXPECT_EQ(r.result.args->rate_hz, 8000.0);
+  EXPECT_EQ(r.result.args->realtime_priority, 80);
+  EXPECT_FALSE(r.result.args->px_per_mm.has_value());
+  EXPECT_FALSE(r.result.args->window_size.has_value());
 }
 
 TEST(PlayerArgs, RealtimePriorityTakesZeroToNinetyNine) {
-  EXPECT_EQ(parse({"i.vimg", "--realtime-priority", "0"}).args->realtime_priority, 0);
-  EXPECT_EQ(parse({"i.vimg", "--realtime-priority", "99"}).args->realtime_priority, 99);
+  EXPECT_EQ(parse({"i.vimg", "--realtime-priority", "0"}).result.args->realtime_priority, 0);
+  EXPECT_EQ(parse({"i.vimg", "--realtime-priority", "99"}).result.args->realtime_priority, 99);
   for (const char* bad : {"100", "-1", "8x", "", "1.5"}) {
-    const ArgsResult r = parse({"i.vimg", "--realtime-priority", bad});
-    EXPECT_FALSE(r.args.has_value()) << bad;
-    EXPECT_EQ(r.error, "--realtime-priority needs a whole number in 0..99") << bad;
+    const Parsed r = parse({"i.vimg", "--realtime-priority", bad});
+    EXPECT_FALSE(r.result.args.has_value()) << bad;
+    EXPECT_EQ(r.result.exit_code, 2) << bad;
+    EXPECT_NE(r.err.find("vimg-player: error: --realtime-priority"), std::string::npos) << r.err;
   }
-  EXPECT_FALSE(parse({"i.vimg", "--realtime-priority"}).args.has_value());
+  EXPECT_EQ(parse({"i.vimg", "--realtime-priority"}).result.exit_code, 2);
 }
 
-TEST(PlayerArgs, BadValuesSayWhatIsWrong) {
-  EXPECT_EQ(parse({"i.vimg", "--rate", "0"}).error, "--rate needs a number of Hz in 1..48000");
-  EXPECT_EQ(parse({"i.vimg", "--px-per-mm", "-3"}).error, "--px-per-mm needs a number above 0");
-  EXPECT_EQ(parse({"i.vimg", "--window", "10x10"}).error, "--window needs WIDTHxHEIGHT, e.g. 800x600");
-  EXPECT_EQ(parse({"i.vimg", "--frobnicate"}).error, "unknown option --frobnicate");
-  EXPECT_EQ(parse({"a.vimg", "b.vimg"}).error, "only one IMAGE, not also b.vimg");
-  EXPECT_EQ(parse({}).error, "needs an IMAGE");
+TEST(PlayerArgs, BadValuesAreUsageErrorsThatSayWhatIsWrong) {
+  for (const std::vector<std::string>& bad : std::vector<std::vector<std::string>>{
+           {"i.vimg", "--rate", "0"}, {"i.vimg", "--rate", "nan"}, {"i.vimg", "--px-per-mm", "-3"},
+           {"i.vimg", "--window", "10x10"}, {"i.vimg", "--frobnicate"}, {"a.vimg", "b.vimg"}, {}}) {
+    const Parsed r = parse(bad);
+    EXPECT_FALSE(r.result.args.has_value());
+    EXPECT_EQ(r.result.exit_code, 2);
+    EXPECT_EQ(r.err.rfind("vimg-player: error: ", 0), 0u) << r.err;
+  }
+  EXPECT_NE(parse({"i.vimg", "--window", "10x10"}).err.find("'10x10' is not WIDTHxHEIGHT of at least 64x64"), std::string::npos);
+  EXPECT_NE(parse({}).err.find("IMAGE is required"), std::string::npos);
 }
 
-TEST(PlayerArgs, HelpGivesNoArgsAndNoError) {
-  const ArgsResult r = parse({"--help"});
-  EXPECT_FALSE(r.args.has_value());
-  EXPECT_TRUE(r.error.empty());
+TEST(PlayerArgs, GoodValuesArrive) {
+  const Parsed r = parse({"i.vimg", "--window", "800x600", "--px-per-mm", "4.5", "--output", "wav:x.wav", "--actuator", "p.xml"});
+  ASSERT_TRUE(r.result.args.has_value()) << r.err;
+  EXPECT_EQ(r.result.args->window_size, (std::pair{800, 600}));
+  EXPECT_EQ(r.result.args->px_per_mm, 4.5);
+  EXPECT_EQ(r.result.args->output, "wav:x.wav");
+  EXPECT_EQ(r.result.args->actuator_path, "p.xml");
+  EXPECT_TRUE(parse({"--calibrate"}).result.args.has_value());
+}
+
+TEST(PlayerArgs, HelpAndVersionExitZero) {
+  EXPECT_FALSE(parse({"--help"}).result.args.has_value());
+  EXPECT_EQ(parse({"--help"}).result.exit_code, 0);
+  EXPECT_EQ(parse({"--version"}).result.exit_code, 0);
 }
 
 }  // namespace
