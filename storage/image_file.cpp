@@ -40,7 +40,7 @@ LoadResult load_image_file(const std::filesystem::path& path) {
   if (!looks_like_png(bytes)) return parse_image_xml(bytes, name);
 
   const PngText text = read_png_text(bytes);
-  if (!text.error.empty()) return failure(name, "damaged PNG: " + text.error);
+  if (!text.error.empty()) return failure(name, (text.damaged ? "damaged PNG: " : "") + text.error);
   if (!text.xml) {
     return failure(name, "this PNG has no 'vibroimage' text chunk, so it is not a vibroimage (a plain picture "
                          "cannot be opened as an image)");

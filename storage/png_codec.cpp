@@ -3,11 +3,14 @@
 #include "storage/png_codec.hpp"
 
 #include <png.h>
+#include <zlib.h>
 
 #include <csetjmp>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <new>
+#include <vector>
 
 #include "storage/limits.hpp"
 
@@ -104,28 +107,10 @@ extern "C" void on_png_read(png_structp png, png_bytep out, png_size_t length) {
 struct ReadState {
   ReadSource source;
   unsigned char* row = nullptr;  // malloc'ed; freed by the caller on every path
-  std::string* text = nullptr;   // receives the `vibroimage` text
-  bool found = false;
-  bool out_of_memory = false;
 };
 
-void copy_text(png_structp png, png_infop info, ReadState* state) {
-  png_textp texts = nullptr;
-  int count = 0;
-  png_get_text(png, info, &texts, &count);
-  for (int i = 0; i < count && !state->found; ++i) {
-    if (texts[i].key != nullptr && std::strcmp(texts[i].key, kPngTextKeyword.data()) == 0) {
-      const std::size_t length =
-          texts[i].compression >= PNG_ITXT_COMPRESSION_NONE ? texts[i].itxt_length : texts[i].text_length;
-      try {
-        state->text->assign(texts[i].text != nullptr ? texts[i].text : "", texts[i].text != nullptr ? length : 0);
-        state->found = true;
-      } catch (...) {
-        state->out_of_memory = true;
-      }
-    }
-  }
-}
+// Text chunks are read by read_vibroimage_text(); libpng skips them.
+constexpr png_byte kTextChunks[] = {'t', 'E', 'X', 't', '\0', 'z', 'T', 'X', 't', '\0', 'i', 'T', 'X', 't', '\0'};
 
 // Returns true when the whole PNG decodes; no C++ objects live here.
 bool decode_text(ReadState* state, ErrorSink* sink) {
@@ -149,6 +134,7 @@ bool decode_text(ReadState* state, ErrorSink* sink) {
   // Fuzzing only: accept wrong CRCs so that mutated chunk contents reach the decoders.
   png_set_crc_action(png, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
 #endif
+  png_set_keep_unknown_chunks(png, PNG_HANDLE_CHUNK_NEVER, kTextChunks, 3);
   png_set_user_limits(png, kMaxPngSide, kMaxPngSide);
   png_set_chunk_malloc_max(png, kMaxImageFileBytes + 1024 * 1024);
   png_read_info(png, info);
@@ -165,7 +151,6 @@ bool decode_text(ReadState* state, ErrorSink* sink) {
     for (png_uint_32 y = 0; y < height; ++y) png_read_row(png, state->row, nullptr);
   }
   png_read_end(png, info);
-  copy_text(png, info, state);
   png_destroy_read_struct(&png, &info, nullptr);
   return true;
 }
@@ -189,6 +174,121 @@ bool chunk_lengths_fit(std::string_view bytes, ErrorSink* sink) {
   return true;  // libpng reports the missing end itself
 }
 
+std::uint32_t be32(std::string_view bytes, std::size_t pos) {
+  const auto byte = [&](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])); };
+  return byte(pos) << 24 | byte(pos + 1) << 16 | byte(pos + 2) << 8 | byte(pos + 3);
+}
+
+// A text chunk whose keyword is `vibroimage`.
+struct TextChunk {
+  std::string_view type;  // tEXt, zTXt or iTXt
+  std::string_view data;  // after the keyword and its NUL
+  bool crc_ok = true;
+};
+
+// Every vibroimage text chunk before IEND (chunk_lengths_fit() has checked the lengths).
+std::vector<TextChunk> vibroimage_chunks(std::string_view bytes) {
+  std::vector<TextChunk> found;
+  std::size_t pos = 8;
+  while (pos + 12 <= bytes.size()) {
+    const std::uint32_t length = be32(bytes, pos);
+    if (length > bytes.size() - pos - 12) break;
+    const std::string_view type = bytes.substr(pos + 4, 4);
+    if (type == "IEND") break;
+    const std::string_view data = bytes.substr(pos + 8, length);
+    if ((type == "tEXt" || type == "zTXt" || type == "iTXt") && data.size() > kPngTextKeyword.size() &&
+        data.substr(0, kPngTextKeyword.size()) == kPngTextKeyword && data[kPngTextKeyword.size()] == '\0') {
+      const std::string_view typed = bytes.substr(pos + 4, 4 + length);
+      const auto crc = static_cast<std::uint32_t>(
+          crc32(0, reinterpret_cast<const Bytef*>(typed.data()), static_cast<uInt>(typed.size())));
+      found.push_back({type, data.substr(kPngTextKeyword.size() + 1), crc == be32(bytes, pos + 8 + length)});
+    }
+    pos += 12 + static_cast<std::size_t>(length);
+  }
+  return found;
+}
+
+// Inflates zlib data into `out`, never past kMaxImageFileBytes + 1 bytes. Returns the problem, or
+// an empty string.
+std::string inflate_text(std::string_view compressed, std::string& out) {
+  z_stream z{};
+  if (inflateInit(&z) != Z_OK) return "cannot start the zlib decoder";
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
+  z.avail_in = static_cast<uInt>(compressed.size());
+  std::string problem;
+  char buffer[65536];
+  int status = Z_OK;
+  while (status == Z_OK) {
+    z.next_out = reinterpret_cast<Bytef*>(buffer);
+    z.avail_out = sizeof buffer;
+    status = ::inflate(&z, Z_NO_FLUSH);
+    const std::size_t produced = sizeof buffer - z.avail_out;
+    if (out.size() + produced > kMaxImageFileBytes) {
+      problem = "too large";
+      break;
+    }
+    out.append(buffer, produced);
+    if (status == Z_BUF_ERROR && z.avail_in == 0) {
+      problem = "the compressed text ends too early";
+      break;
+    }
+  }
+  if (problem.empty() && status != Z_STREAM_END) problem = std::string("zlib: ") + (z.msg != nullptr ? z.msg : "bad data");
+  inflateEnd(&z);
+  return problem;
+}
+
+// The XML of the one vibroimage chunk, or why there is none.
+void read_vibroimage_text(std::string_view bytes, PngText& result) {
+  const std::vector<TextChunk> chunks = vibroimage_chunks(bytes);
+  if (chunks.empty()) return;
+  if (chunks.size() > 1) {
+    result.error = "this PNG holds " + std::to_string(chunks.size()) + " '" + std::string(kPngTextKeyword) +
+                   "' text chunks; a vibroimage has exactly one";
+    return;
+  }
+  const TextChunk& c = chunks.front();
+  const std::string what = "the '" + std::string(kPngTextKeyword) + "' " + std::string(c.type) + " chunk is damaged";
+  const auto damage = [&](const std::string& why) {
+    result.error = what + " (" + why + ")";
+    result.damaged = true;
+  };
+#ifndef VIMG_FUZZING
+  if (!c.crc_ok) return damage("CRC mismatch");
+#endif
+  std::string_view text = c.data;
+  bool compressed = false;
+  if (c.type == "zTXt") {
+    if (text.empty() || text[0] != '\0') return damage("unknown compression method");
+    text.remove_prefix(1);
+    compressed = true;
+  } else if (c.type == "iTXt") {
+    if (text.size() < 2 || (text[0] != '\0' && text[0] != '\1') || text[1] != '\0') {
+      return damage("bad compression flag or method");
+    }
+    compressed = text[0] == '\1';
+    text.remove_prefix(2);
+    for (int field = 0; field < 2; ++field) {  // language tag, translated keyword
+      const std::size_t nul = text.find('\0');
+      if (nul == std::string_view::npos) return damage("no end of its language tag or translated keyword");
+      text.remove_prefix(nul + 1);
+    }
+  }
+  std::string xml;
+  if (compressed) {
+    const std::string problem = inflate_text(text, xml);
+    if (problem == "too large") {
+      result.error = "the '" + std::string(kPngTextKeyword) + "' text of this PNG inflates to more than " +
+                     std::to_string(kMaxImageFileBytes) + " bytes (limit " + std::to_string(kMaxImageFileBytes) + ")";
+      return;
+    }
+    if (!problem.empty()) return damage(problem);
+  } else {
+    xml.assign(text);
+  }
+  result.xml = std::move(xml);
+}
+
 }  // namespace
 
 bool looks_like_png(std::string_view bytes) {
@@ -210,24 +310,27 @@ EncodedPng encode_png(const RgbRaster& raster, std::uint32_t pixels_per_metre, s
 
 PngText read_png_text(std::string_view bytes) {
   PngText result;
-  std::string text;
   ReadState state;
   state.source.data = reinterpret_cast<const unsigned char*>(bytes.data());
   state.source.size = bytes.size();
-  state.text = &text;
   ErrorSink sink;
   if (!chunk_lengths_fit(bytes, &sink)) {
     result.error = sink.message;
+    result.damaged = true;
     return result;
   }
   const bool decoded = decode_text(&state, &sink);
   std::free(state.row);
   if (!decoded) {
     result.error = sink.message;
-  } else if (state.out_of_memory) {
+    result.damaged = true;
+    return result;
+  }
+  try {
+    read_vibroimage_text(bytes, result);
+  } catch (const std::bad_alloc&) {
+    result = PngText{};
     result.error = "out of memory reading the vibroimage text";
-  } else if (state.found) {
-    result.xml = std::move(text);
   }
   return result;
 }

@@ -28,10 +28,14 @@ EncodedPng encode_png(const RgbRaster& raster, std::uint32_t pixels_per_metre, s
 
 struct PngText {
   std::optional<std::string> xml;  // the `vibroimage` text; empty when the PNG has none
-  std::string error;               // libpng's complaint when the PNG is damaged; empty if fine
+  std::string error;               // what is wrong; empty if fine
+  bool damaged = false;            // the error is damage (as opposed to a limit or a second chunk)
 };
 
-// Decodes the whole PNG (so damage anywhere is reported) and returns its `vibroimage` text.
+// Decodes the whole PNG (so damage anywhere is reported) and returns its one `vibroimage` text
+// chunk (tEXt, zTXt or iTXt, compressed or not), read by us rather than by libpng so that a damaged
+// chunk (bad CRC, bad zlib data), a text that inflates past kMaxImageFileBytes and a second
+// vibroimage chunk are each reported as such.
 PngText read_png_text(std::string_view bytes);
 
 }  // namespace vimg
