@@ -1,11 +1,11 @@
 #include "hal/actuator_profile.hpp"
 
+#include "storage/read_file.hpp"
+
 #include <tinyxml2.h>
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace vimg {
 
@@ -188,15 +188,13 @@ ProfileLoadResult parse_actuator_profile(std::string_view xml, const std::string
 }
 
 ProfileLoadResult load_actuator_profile(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) {
+  FileReadResult read = read_regular_file(path, kMaxProfileFileBytes);
+  if (!read.bytes) {
     ProfileLoadResult result;
-    result.errors.push_back(path.string() + ": error: cannot open the actuator profile");
+    result.errors.push_back(path.string() + ": error: " + read.error);
     return result;
   }
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parse_actuator_profile(text.str(), path.string());
+  return parse_actuator_profile(*read.bytes, path.string());
 }
 
 std::string_view to_string(ActuatorType type) {

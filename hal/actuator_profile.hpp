@@ -44,6 +44,9 @@ struct ProfileLoadResult {
   std::vector<std::string> errors;         // "FILE:LINE: error: problem"
 };
 
+// A profile file is small: anything larger is refused before it is read.
+inline constexpr std::size_t kMaxProfileFileBytes = 256 * 1024;
+
 ProfileLoadResult parse_actuator_profile(std::string_view xml, const std::string& file_name);
 ProfileLoadResult load_actuator_profile(const std::filesystem::path& path);
 

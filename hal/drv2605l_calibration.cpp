@@ -1,51 +1,52 @@
 #include "hal/drv2605l_calibration.hpp"
 
+#include <system_error>
+
+#include "storage/atomic_file.hpp"
+#include "storage/diagnostic.hpp"
+#include "storage/read_file.hpp"
+
 #include <charconv>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 namespace vimg {
 
 std::optional<std::string> save_calibration(const Drv2605lCalibration& calibration,
                                             const std::filesystem::path& path) {
-  const std::filesystem::path temporary = path.string() + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    if (!out) {
-      return path.string() + ": error: cannot write the calibration file";
-    }
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "# DRV2605L auto-calibration results (vibroimage)\nresonance_hz=%.3f\na_cal_comp=0x%02X\n"
-                  "a_cal_bemf=0x%02X\nbemf_gain=%u\n",
-                  calibration.resonance_hz, calibration.a_cal_comp, calibration.a_cal_bemf,
-                  static_cast<unsigned>(calibration.bemf_gain));
-    out << text;
-    if (!out.flush()) {
-      return path.string() + ": error: cannot write the calibration file";
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    return path.string() + ": error: cannot replace the calibration file: " + error.message();
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "# DRV2605L auto-calibration results (vibroimage)\nresonance_hz=%.3f\na_cal_comp=0x%02X\n"
+                "a_cal_bemf=0x%02X\nbemf_gain=%u\n",
+                calibration.resonance_hz, calibration.a_cal_comp, calibration.a_cal_bemf,
+                static_cast<unsigned>(calibration.bemf_gain));
+  if (auto error = write_file_atomically(path, text)) {
+    return path.string() + ": error: cannot write the calibration file (" + *error + ")";
   }
   return std::nullopt;
 }
 
 CalibrationLoadResult load_calibration(const std::filesystem::path& path) {
-  CalibrationLoadResult result;
-  std::ifstream in(path);
-  if (!in) {
-    return result;  // no file: nothing to restore
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return {};  // no file: nothing to restore
+  FileReadResult read = read_regular_file(path, kMaxCalibrationFileBytes);
+  if (!read.bytes) {
+    CalibrationLoadResult result;
+    result.error = path.string() + ": error: " + read.error;
+    return result;
   }
+  return parse_calibration(*read.bytes, path.string());
+}
+
+CalibrationLoadResult parse_calibration(std::string_view text, const std::string& file_name) {
+  CalibrationLoadResult result;
+  std::istringstream in{std::string(text)};
   Drv2605lCalibration calibration;
   bool seen[4] = {false, false, false, false};
   std::string line;
   int line_number = 0;
   auto fail = [&](const std::string& problem) {
-    result.error = path.string() + ":" + std::to_string(line_number) + ": error: " + problem;
+    result.error = file_name + ":" + std::to_string(line_number) + ": error: " + problem;
     return result;
   };
   while (std::getline(in, line)) {
@@ -73,7 +74,7 @@ CalibrationLoadResult load_calibration(const std::filesystem::path& path) {
     unsigned number = 0;
     const auto [end, status] = std::from_chars(digits.data(), digits.data() + digits.size(), number, base);
     if (status != std::errc() || end != digits.data() + digits.size() || number > 255) {
-      return fail("'" + key + "' must be a byte value, not '" + value + "'");
+      return fail("'" + escape_input(key) + "' must be a byte value, not '" + escape_input(value) + "'");
     }
     if (key == "a_cal_comp") {
       calibration.a_cal_comp = static_cast<std::uint8_t>(number);
@@ -86,7 +87,7 @@ CalibrationLoadResult load_calibration(const std::filesystem::path& path) {
       calibration.bemf_gain = static_cast<std::uint8_t>(number);
       seen[3] = true;
     } else {
-      return fail("unknown key '" + key + "'");
+      return fail("unknown key '" + escape_input(key) + "'");
     }
   }
   if (!(seen[0] && seen[1] && seen[2] && seen[3])) {

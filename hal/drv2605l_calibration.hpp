@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace vimg {
 
@@ -28,6 +29,11 @@ struct CalibrationLoadResult {
   std::optional<Drv2605lCalibration> calibration;
   std::string error;  // "FILE:LINE: error: problem" when calibration is empty and the file exists
 };
+// No file: an empty result without error. The file is read through the bounded reader.
 CalibrationLoadResult load_calibration(const std::filesystem::path& path);
+// The text of a calibration file (key=value lines); `file_name` names it in messages.
+CalibrationLoadResult parse_calibration(std::string_view text, const std::string& file_name);
+
+inline constexpr std::size_t kMaxCalibrationFileBytes = 64 * 1024;
 
 }  // namespace vimg

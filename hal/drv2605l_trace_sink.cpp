@@ -1,9 +1,10 @@
 #include "hal/drv2605l_trace_sink.hpp"
 
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "hal/device_error.hpp"
+#include "storage/atomic_file.hpp"
 
 namespace vimg {
 
@@ -41,13 +42,9 @@ void Drv2605lTraceSink::close() {
   if (closed_) return;
   closed_ = true;
   driver_->close();
-  std::ofstream out(trace_path_, std::ios::trunc);
-  if (!out) {
-    error_ = trace_path_.string() + ": cannot write the register trace";
-    return;
-  }
-  chip_.write_trace_csv(out);
-  if (!out.flush()) error_ = trace_path_.string() + ": cannot write the register trace";
+  std::ostringstream text;
+  chip_.write_trace_csv(text);
+  if (auto error = write_file_atomically(trace_path_, text.str())) error_ = "cannot write the register trace: " + *error;
 }
 
 }  // namespace vimg
