@@ -61,8 +61,10 @@ void SdlAudioSink::open(double sample_rate_hz) {
     buffer_frames = 16;
     while (buffer_frames < 4096 && buffer_frames * 1.5 < sample_rate_hz * 0.008) buffer_frames *= 2;
   }
-  ring_frames_ = options_.ring_frames > 0 ? options_.ring_frames : 4 * buffer_frames;
-  ring_ = std::make_unique<SpscRing<float>>(static_cast<std::size_t>(ring_frames_));
+  // The device clock paces the stream, so the renderer keeps this ring full: its length is
+  // latency. Two device buffers let the callback always find a whole buffer waiting.
+  ring_ = std::make_unique<SpscRing<float>>(static_cast<std::size_t>(options_.ring_frames > 0 ? options_.ring_frames : 2 * buffer_frames));
+  ring_frames_ = static_cast<int>(ring_->capacity());
   SDL_AudioSpec wanted{};
   wanted.freq = static_cast<int>(std::lround(sample_rate_hz));
   wanted.format = AUDIO_F32SYS;

@@ -31,7 +31,7 @@ struct SdlAudioOptions {
   std::string device_name;            // empty: the system default; otherwise the exact SDL name
   // SDL's buffer, the main part of the output latency; 0: the power of two nearest 8 ms.
   int device_buffer_frames = 0;
-  // Our queue in front of it; 0: four device buffers.
+  // Our queue in front of it (rounded up to a power of two); 0: two device buffers.
   int ring_frames = 0;
 };
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <system_error>
 
+#include "storage/diagnostic.hpp"
 #include "storage/limits.hpp"
 #include "storage/read_file.hpp"
 
@@ -51,23 +52,8 @@ bool parse_finger(std::string_view s, int& out) {
   return r.ec == std::errc{} && r.ptr == s.data() + s.size();
 }
 
-// A field as it appears in a message: in quotes, with control and non-ASCII bytes as \xNN.
-std::string quoted(std::string_view field) {
-  static const char* const kHex = "0123456789ABCDEF";
-  std::string out = "'";
-  for (const char c : field.substr(0, 64)) {
-    const auto b = static_cast<unsigned char>(c);
-    if (b < 0x20 || b >= 0x7F || c == '\'' || c == '\\') {
-      out += "\\x";
-      out += kHex[b >> 4];
-      out += kHex[b & 15];
-    } else {
-      out += c;
-    }
-  }
-  if (field.size() > 64) out += "...";
-  return out + "'";
-}
+// A field as it appears in a message: in quotes, escaped and cut (storage/diagnostic.hpp).
+std::string quoted(std::string_view field) { return "'" + escape_input(field) + "'"; }
 
 std::string format_number(double v) {
   char buf[64];
