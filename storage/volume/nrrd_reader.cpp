@@ -7,12 +7,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <set>
 #include <sstream>
 
+#include "storage/read_file.hpp"
 #include "storage/volume/nrrd.hpp"
 
 namespace vimg {
@@ -266,11 +266,17 @@ class Reader {
       sizes_[i] = static_cast<int>(*n);
       samples *= static_cast<std::size_t>(*n);
       if (samples > kMaxVolumeSamples) {
-        error(sizes->line, "volume has more than " + std::to_string(kMaxVolumeSamples) + " samples");
+        error(sizes->line, "volume has more than " + std::to_string(kMaxVolumeSamples) + " samples (limit " +
+                               std::to_string(kMaxVolumeSamples) + ")");
         return false;
       }
     }
     samples_ = samples;
+    if (samples * sample_bytes(type_) > kMaxVolumeDataBytes) {
+      error(sizes->line, "the header declares " + std::to_string(samples * sample_bytes(type_)) + " bytes of data (limit " +
+                             std::to_string(kMaxVolumeDataBytes) + ")");
+      return false;
+    }
     if (vector_ && sizes_[0] != 3) {
       error(sizes->line, "a 4-dimensional volume must have 3 components on its first axis, got " + std::to_string(sizes_[0]));
       return false;
@@ -394,19 +400,10 @@ class Reader {
     std::vector<float> samples(samples_);
     if (encoding_ == Encoding::ascii) {
       if (!decode_ascii(payload, samples)) return;
+    } else if (encoding_ == Encoding::gzip) {
+      if (!inflate_samples(payload, samples)) return;
     } else {
-      const std::size_t expected = samples_ * sample_bytes(type_);
-      std::string inflated;
-      std::string_view binary = payload;
-      if (encoding_ == Encoding::gzip) {
-        if (!inflate(payload, expected, inflated)) return;
-        binary = inflated;
-      }
-      if (binary.size() != expected) {
-        error(data_line_, "data holds " + std::to_string(binary.size()) + " bytes, the header needs " + std::to_string(expected));
-        return;
-      }
-      convert(binary, samples);
+      convert(payload, samples.data(), samples.size());
     }
     for (std::size_t i = 0; i < samples.size(); ++i) {
       if (!std::isfinite(samples[i])) {
@@ -418,35 +415,63 @@ class Reader {
     else result_.scalar.emplace(geometry_, std::move(samples));
   }
 
-  bool inflate(std::string_view compressed, std::size_t expected, std::string& out) {
+  // Inflates gzip (or zlib) data piece by piece, converting each piece into samples as it comes:
+  // never more than the header's declared bytes are inflated (one byte more is the proof of excess),
+  // and the inflated bytes are never held whole.
+  bool inflate_samples(std::string_view compressed, std::vector<float>& samples) {
+    const std::size_t n = sample_bytes(type_);
+    const std::size_t expected = samples.size() * n;
     z_stream z{};
     if (inflateInit2(&z, 15 + 32) != Z_OK) {  // gzip or zlib header
       error(data_line_, "cannot start gzip decoder");
       return false;
     }
-    out.resize(expected + 1);  // one spare byte detects data longer than the header says
-    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
-    z.avail_in = static_cast<uInt>(std::min<std::size_t>(compressed.size(), std::numeric_limits<uInt>::max()));
-    z.next_out = reinterpret_cast<Bytef*>(out.data());
-    z.avail_out = static_cast<uInt>(out.size());
+    // An odd-sized piece: samples straddle pieces, the partial one is carried to the next.
+    constexpr std::size_t kPiece = 65521;
+    std::vector<char> buffer(kPiece + 8);
+    std::size_t carried = 0, converted = 0, total = 0;
+    std::string_view input = compressed;
     int status = Z_OK;
+    std::string problem;
     while (status == Z_OK) {
+      if (z.avail_in == 0 && !input.empty()) {
+        const std::size_t feed = std::min<std::size_t>(input.size(), std::numeric_limits<uInt>::max());
+        z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(input.data()));
+        z.avail_in = static_cast<uInt>(feed);
+        input.remove_prefix(feed);
+      }
+      const std::size_t room = std::min(kPiece, expected - total + 1);
+      z.next_out = reinterpret_cast<Bytef*>(buffer.data() + carried);
+      z.avail_out = static_cast<uInt>(room);
       status = ::inflate(&z, Z_NO_FLUSH);
-      if (status == Z_OK && z.avail_out == 0) break;
-      if (status == Z_BUF_ERROR) break;
+      const std::size_t produced = room - z.avail_out;
+      total += produced;
+      if (total > expected) {
+        problem = "gzip data inflates to more than the " + std::to_string(expected) + " bytes the header declares";
+        break;
+      }
+      const std::size_t bytes = carried + produced;
+      const std::size_t whole = bytes / n;
+      convert(std::string_view(buffer.data(), whole * n), samples.data() + converted, whole);
+      converted += whole;
+      carried = bytes - whole * n;
+      std::memmove(buffer.data(), buffer.data() + whole * n, carried);
+      if (status == Z_BUF_ERROR && z.avail_in == 0 && input.empty()) {
+        problem = "gzip data is truncated";
+      } else if (status == Z_BUF_ERROR) {
+        status = Z_OK;  // no progress possible with this output room; go on
+      } else if (status != Z_OK && status != Z_STREAM_END) {
+        problem = std::string("gzip data is corrupt (") + (z.msg ? z.msg : "zlib error") + ")";
+      }
     }
-    const std::size_t produced = out.size() - z.avail_out;
     inflateEnd(&z);
-    if (status != Z_STREAM_END && status != Z_OK) {
-      error(data_line_, status == Z_BUF_ERROR ? "gzip data is truncated"
-                                              : std::string("gzip data is corrupt (") + (z.msg ? z.msg : "zlib error") + ")");
+    if (problem.empty() && total != expected) {
+      problem = "data holds " + std::to_string(total) + " bytes, the header needs " + std::to_string(expected);
+    }
+    if (!problem.empty()) {
+      error(data_line_, problem);
       return false;
     }
-    if (status == Z_OK && produced <= expected) {
-      error(data_line_, "gzip data is truncated");
-      return false;
-    }
-    out.resize(produced);
     return true;
   }
 
@@ -461,10 +486,11 @@ class Reader {
     return v;
   }
 
-  void convert(std::string_view binary, std::vector<float>& samples) const {
+  // Converts `count` samples from the start of `binary` into out[0..count).
+  void convert(std::string_view binary, float* out, std::size_t count) const {
     const std::size_t n = sample_bytes(type_);
     const bool big = big_endian_;
-    for (std::size_t i = 0; i < samples.size(); ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
       const char* p = binary.data() + i * n;
       double v = 0.0;
       switch (type_) {
@@ -479,7 +505,7 @@ class Reader {
         case SampleType::f32: v = load<float>(p, big); break;
         case SampleType::f64: v = load<double>(p, big); break;
       }
-      samples[i] = static_cast<float>(v);
+      out[i] = static_cast<float>(v);
     }
   }
 
@@ -538,15 +564,14 @@ NrrdLoadResult parse_nrrd(std::string_view bytes, const std::string& file_name) 
 }
 
 NrrdLoadResult load_nrrd_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  const FileReadResult read = read_regular_file(path, kMaxVolumeFileBytes);
+  if (!read.bytes) {
     NrrdLoadResult r;
-    r.diagnostics.push_back({Diagnostic::Severity::error, path.string(), 0, "cannot open file"});
+    const std::string problem = read.error.starts_with("cannot open") ? "cannot open file" : read.error;
+    r.diagnostics.push_back({Diagnostic::Severity::error, path.string(), 0, printable_message(problem)});
     return r;
   }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return parse_nrrd(buffer.str(), path.string());
+  return parse_nrrd(*read.bytes, path.string());
 }
 
 }  // namespace vimg

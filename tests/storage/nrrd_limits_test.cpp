@@ -1,0 +1,104 @@
+// NRRD volumes against their limits (docs/limits.md, "Volumes"): a header declaring more data than
+// kMaxVolumeDataBytes is refused before anything is allocated, gzip data is never inflated past the
+// declared size, and files that are not regular (FIFOs, devices) or too large are refused without
+// blocking or reading them.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include "storage/limits.hpp"
+#include "storage/volume/nrrd.hpp"
+#include "storage_test_support.hpp"
+
+namespace vimg {
+namespace {
+
+std::string first_message(const NrrdLoadResult& r) { return r.diagnostics.empty() ? "" : r.diagnostics[0].to_string(); }
+
+std::string gzip(const std::string& raw) {
+  z_stream z{};
+  EXPECT_EQ(deflateInit2(&z, 9, Z_DEFLATED, 15 + 16, 9, Z_DEFAULT_STRATEGY), Z_OK);
+  std::string out(deflateBound(&z, static_cast<uLong>(raw.size())) + 64, '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(raw.data()));
+  z.avail_in = static_cast<uInt>(raw.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = static_cast<uInt>(out.size());
+  EXPECT_EQ(deflate(&z, Z_FINISH), Z_STREAM_END);
+  out.resize(out.size() - z.avail_out);
+  deflateEnd(&z);
+  return out;
+}
+
+TEST(NrrdLimits, DeclaredDataOverTheByteLimitIsRefusedAtTheSizesLine) {
+  // 2^27 doubles: within the sample limit, but 1 GiB of data.
+  const std::string text = "NRRD0004\ntype: double\ndimension: 3\nsizes: 512 512 512\nendian: little\nencoding: raw\n\nxyz";
+  EXPECT_EQ(first_message(parse_nrrd(text, "d.nrrd")),
+            "d.nrrd:4: error: the header declares 1073741824 bytes of data (limit 536870912)");
+}
+
+TEST(NrrdLimits, GzipDataLongerThanDeclaredIsRefused) {
+  // 64 MiB of zeros deflate to about 64 KB; the header declares 4 bytes.
+  const std::string head = "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 1\nencoding: gzip\n\n";
+  const NrrdLoadResult r = parse_nrrd(head + gzip(std::string(64 * kMiB, '\0')), "bomb.nrrd");
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(first_message(r), "bomb.nrrd:7: error: gzip data inflates to more than the 4 bytes the header declares");
+}
+
+TEST(NrrdLimits, GzipDataOfExactlyTheDeclaredSizeLoadsInAnyChunking) {
+  // 2-byte samples against the inflater's odd-sized pieces: every sample must still come out whole.
+  std::string raw;
+  for (int i = 0; i < 300000; ++i) {
+    const auto v = static_cast<std::int16_t>((i * 37) % 20001 - 10000);
+    raw += static_cast<char>(v & 0xFF);
+    raw += static_cast<char>((v >> 8) & 0xFF);
+  }
+  const std::string head = "NRRD0004\ntype: short\ndimension: 3\nsizes: 100 100 30\nendian: little\nencoding: gzip\n\n";
+  const NrrdLoadResult r = parse_nrrd(head + gzip(raw), "ok.nrrd");
+  ASSERT_TRUE(r.scalar.has_value()) << first_message(r);
+  for (int i : {0, 1, 12345, 299999}) {
+    EXPECT_EQ(r.scalar->values()[static_cast<std::size_t>(i)], static_cast<float>((i * 37) % 20001 - 10000)) << i;
+  }
+}
+
+TEST(NrrdLimits, AFifoIsRefusedWithoutBlocking) {
+  test::TempDir dir("nrrd_fifo");
+  const auto fifo = dir / "v.nrrd";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // A writer that gives up after two seconds, so that a reader blocking in open() is released.
+  std::atomic<bool> done{false};
+  std::thread writer([&] {
+    for (int i = 0; i < 200 && !done; ++i) {
+      const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+      if (fd >= 0) {
+        ::close(fd);
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  });
+  const NrrdLoadResult r = load_nrrd_file(fifo);
+  done = true;
+  writer.join();
+  EXPECT_EQ(first_message(r), fifo.string() + ": error: is not a regular file (a FIFO)");
+}
+
+TEST(NrrdLimits, DevicesAndFilesOverTheSizeLimitAreNotRead) {
+  EXPECT_EQ(first_message(load_nrrd_file("/dev/zero")), "/dev/zero: error: is not a regular file (a character device)");
+  test::TempDir dir("nrrd_big");
+  const auto big = dir / "big.nrrd";
+  { std::ofstream(big).put('N'); }
+  std::filesystem::resize_file(big, kMaxVolumeFileBytes + 1);  // sparse: nothing is written
+  EXPECT_EQ(first_message(load_nrrd_file(big)), big.string() + ": error: is larger than 1024 MiB (limit 1073741824 bytes)");
+}
+
+}  // namespace
+}  // namespace vimg
