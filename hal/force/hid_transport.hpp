@@ -1,6 +1,10 @@
 #pragma once
 // The few hidapi calls the HID force device needs, behind an interface: hidapi in production,
 // an emulated device in tests. Byte 0 of every buffer is the report id.
+//
+// Threads: a transport belongs to one thread at a time; HidForceDevice calls read() and write()
+// from the haptic loop's thread, so an implementation must not lock or throw there (hidapi's own
+// error path may allocate its error text; the loop reads no text from it).
 #include <cstdint>
 #include <memory>
 #include <span>

@@ -4,9 +4,13 @@
 // last written acts on the probe until the next one (zero-order hold, like a real device).
 //   m x'' = k_h (h(t) - x) + b_h (h'(t) - x') - b_dev x' + F
 // read(time_s) integrates up to time_s in sub-steps (semi-implicit Euler); every read that
-// advances the device's time is a new measurement (ProbeSample::sequence counts up). It also accounts the
-// work the rendered force does on the probe, W = integral F . dx: a passive virtual environment
-// never delivers net energy, so W stays <= 0 (up to what it stores and gives back).
+// advances the device's time is a new measurement (ProbeSample::sequence counts up). It also
+// accounts the work the rendered force does on the probe, W = integral F . dx: a passive virtual
+// environment never delivers net energy, so W stays <= 0 (up to what it stores and gives back).
+//
+// Threads: one thread at a time drives it (the haptic loop's); read() and write_force() neither
+// allocate, lock nor throw. The test hooks (fail_next_*, freeze_measurements) may be called from
+// another thread.
 #include <atomic>
 #include <vector>
 

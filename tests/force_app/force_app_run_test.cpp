@@ -114,8 +114,10 @@ std::vector<std::string> files_in(const fs::path& dir) {
 
 class ForceApp : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    root_ = fs::path(VIMG_BINARY_DIR) / "test_output" / "force_app";
+  // Each test its own folder and study data set: ctest runs the tests in parallel processes.
+  void SetUp() override {
+    root_ = fs::path(VIMG_BINARY_DIR) / "test_output" / "force_app" /
+            ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(root_);
     fs::create_directories(root_);
     const ProgramRun study = run(kVimg, {"volume", "make-study", "--seed", "1", "--out", "S"}, root_);
@@ -124,14 +126,14 @@ class ForceApp : public ::testing::Test {
     std::ofstream(root_ / "P.csv") << "time_s,x_mm,y_mm,z_mm\n0,-70,-20,-50\n1,70,20,50\n2,-70,0,0\n";
   }
   // A fresh folder for one run's outputs, holding nothing else.
-  static fs::path run_dir(const std::string& name) {
+  fs::path run_dir(const std::string& name) const {
     const fs::path dir = root_ / name;
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
   }
-  static std::string scene() { return (root_ / "S" / "study.vscene.xml").string(); }
-  static std::string path() { return (root_ / "P.csv").string(); }
+  std::string scene() const { return (root_ / "S" / "study.vscene.xml").string(); }
+  std::string path() const { return (root_ / "P.csv").string(); }
 
   // The log's rows (without the header): every |F| within the clamp, the last one zero with the
   // given flag. Returns the number of rows.
@@ -159,10 +161,8 @@ class ForceApp : public ::testing::Test {
     return lines.size() - 1;
   }
 
-  static fs::path root_;
+  fs::path root_;
 };
-
-fs::path ForceApp::root_;
 
 TEST_F(ForceApp, TheAcceptanceRunHoldsTheScenesRateWithinTheClampAndEndsAtZero) {
   const auto loaded = load_volume_scene_file(scene());
