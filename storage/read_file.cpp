@@ -29,11 +29,13 @@ std::string size_text(std::size_t bytes) {
 
 }  // namespace
 
-FileReadResult read_regular_file(const std::filesystem::path& path, std::size_t max_bytes) {
+FileReadResult read_regular_file(const std::filesystem::path& path, std::size_t max_bytes, FinalSymlink final_symlink) {
   FileReadResult result;
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+  const int no_follow = final_symlink == FinalSymlink::refuse ? O_NOFOLLOW : 0;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY | no_follow);
   if (fd < 0) {
-    result.error = std::string("cannot open: ") + std::strerror(errno);
+    if (errno == ELOOP && no_follow != 0) result.error = "is a symbolic link (name the file itself)";
+    else result.error = std::string("cannot open: ") + std::strerror(errno);
     return result;
   }
   struct stat st {};

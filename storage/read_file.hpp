@@ -17,6 +17,11 @@ struct FileReadResult {
   std::string error;
 };
 
-FileReadResult read_regular_file(const std::filesystem::path& path, std::size_t max_bytes);
+// Whether the last component of the path may be a symbolic link. Paths named inside files refuse
+// it (read_named_file): the link, not its target, is what the file's author controls.
+enum class FinalSymlink { follow, refuse };
+
+FileReadResult read_regular_file(const std::filesystem::path& path, std::size_t max_bytes,
+                                 FinalSymlink final_symlink = FinalSymlink::follow);
 
 }  // namespace vimg

@@ -39,8 +39,16 @@ struct VolumeSceneLoadResult {
   bool ok() const { return loaded.has_value(); }
 };
 
-// Reads the scene, then every NRRD file it names (relative to the scene's folder), checking
-// that each is the declared kind (scalar or vector).
-VolumeSceneLoadResult load_volume_scene_file(const std::filesystem::path& path);
+struct VolumeSceneLoadOptions {
+  // Data files must be in the scene's folder or below it; true lets `file=` lead anywhere (an
+  // absolute path, `..`), for the user's explicit request only. Either way a data file is a regular
+  // file (never a symbolic link, FIFO or device) within kMaxVolumeFileBytes (storage/named_file.hpp).
+  bool allow_files_outside_scene_folder = false;
+};
+
+// Reads the scene (at most kMaxSceneFileBytes), then every NRRD file it names (relative to the
+// scene's folder), checking that each is the declared kind (scalar or vector).
+VolumeSceneLoadResult load_volume_scene_file(const std::filesystem::path& path,
+                                             const VolumeSceneLoadOptions& options = {});
 
 }  // namespace vimg

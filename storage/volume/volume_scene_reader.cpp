@@ -1,11 +1,12 @@
 #include <tinyxml2.h>
 
 #include <algorithm>
-#include <fstream>
 #include <set>
 #include <sstream>
+#include <optional>
 
 #include "storage/limits.hpp"
+#include "storage/named_file.hpp"
 #include "storage/number_text.hpp"
 #include "storage/xml_limits.hpp"
 #include "storage/volume/nrrd.hpp"
@@ -302,61 +303,84 @@ class SceneReader {
   std::vector<int> cue_lines_;
 };
 
+// Parses into `list`, which the loader goes on using for the scene's own messages.
+std::optional<VolumeScene> parse_scene(std::string_view xml, DiagnosticList& list) {
+  if (xml.size() > kMaxSceneFileBytes) {
+    list.error(0, "scene file is larger than " + std::to_string(kMaxSceneFileBytes / kMiB) + " MiB (limit " +
+                      std::to_string(kMaxSceneFileBytes) + ")");
+    return std::nullopt;
+  }
+  return SceneReader(list).run(xml);
+}
+
+const char* element_of(VolumeDataRef::Kind kind) {
+  return kind == VolumeDataRef::Kind::scalar ? "<scalarData>" : "<vectorData>";
+}
+
 }  // namespace
 
 VolumeSceneParseResult parse_volume_scene_xml(std::string_view xml, const std::string& file_name) {
   VolumeSceneParseResult result;
   DiagnosticList list(file_name);
-  if (xml.size() > kMaxSceneFileBytes) {
-    list.error(0, "scene file is larger than " + std::to_string(kMaxSceneFileBytes / kMiB) + " MiB (limit " +
-                      std::to_string(kMaxSceneFileBytes) + ")");
-  } else {
-    result.scene = SceneReader(list).run(xml);
-  }
+  result.scene = parse_scene(xml, list);
   result.diagnostics = list.take();
   return result;
 }
 
-VolumeSceneLoadResult load_volume_scene_file(const std::filesystem::path& path) {
+VolumeSceneLoadResult load_volume_scene_file(const std::filesystem::path& path, const VolumeSceneLoadOptions& options) {
   VolumeSceneLoadResult result;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    result.diagnostics.push_back({Diagnostic::Severity::error, path.string(), 0, "cannot open file"});
+  DiagnosticList list(path.string());
+  const FileReadResult text = read_regular_file(path, kMaxSceneFileBytes);
+  if (!text.bytes) {
+    list.error(0, text.error.starts_with("cannot open") ? "cannot open file" : text.error);
+    result.diagnostics = list.take();
     return result;
   }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  VolumeSceneParseResult parsed = parse_volume_scene_xml(buffer.str(), path.string());
-  result.diagnostics = std::move(parsed.diagnostics);
-  if (!parsed.scene) return result;
+  std::optional<VolumeScene> scene = parse_scene(*text.bytes, list);
+  if (!scene) {
+    result.diagnostics = list.take();
+    return result;
+  }
   LoadedVolumeScene loaded;
-  loaded.scene = std::move(*parsed.scene);
+  loaded.scene = std::move(*scene);
+  std::vector<Diagnostic> data_diagnostics;  // the data files' own messages, each file capped on its own
+  NamedFileOptions named;
+  named.allow_outside_folder = options.allow_files_outside_scene_folder;
   for (const auto& ref : loaded.scene.data) {
-    const std::filesystem::path data_path = path.parent_path() / ref.file;
-    NrrdLoadResult nrrd = load_nrrd_file(data_path);
-    for (auto& d : nrrd.diagnostics) result.diagnostics.push_back(std::move(d));
+    const NamedFileReadResult data = read_named_file(path.parent_path(), ref.file, kMaxVolumeFileBytes, named,
+                                                     "the scene's folder");
+    if (!data.read.bytes) {
+      list.error(ref.source_line, std::string(element_of(ref.kind)) + " attribute 'file' = \"" + escape_input(ref.file) +
+                                      "\": " + data.read.error);
+      list.error(ref.source_line, "cannot load data '" + escape_input(ref.id) + "' from " + data.path.string());
+      continue;
+    }
+    NrrdLoadResult nrrd = parse_nrrd(*data.read.bytes, data.path.string());
+    for (auto& d : nrrd.diagnostics) data_diagnostics.push_back(std::move(d));
     if (!nrrd.ok()) {
-      result.diagnostics.push_back({Diagnostic::Severity::error, path.string(), ref.source_line,
-                                    "cannot load data '" + ref.id + "' from " + data_path.string()});
+      list.error(ref.source_line, "cannot load data '" + escape_input(ref.id) + "' from " + data.path.string());
       continue;
     }
     if (ref.kind == VolumeDataRef::Kind::scalar) {
       if (!nrrd.scalar) {
-        result.diagnostics.push_back({Diagnostic::Severity::error, path.string(), ref.source_line,
-                                      "data '" + ref.id + "' is declared scalar but " + ref.file + " holds vectors"});
+        list.error(ref.source_line, "data '" + escape_input(ref.id) + "' is declared scalar but " + escape_input(ref.file) +
+                                        " holds vectors");
         continue;
       }
       loaded.scalars[ref.id] = std::make_shared<const ScalarGrid>(std::move(*nrrd.scalar));
     } else {
       if (!nrrd.vector) {
-        result.diagnostics.push_back({Diagnostic::Severity::error, path.string(), ref.source_line,
-                                      "data '" + ref.id + "' is declared vector but " + ref.file + " holds scalars"});
+        list.error(ref.source_line, "data '" + escape_input(ref.id) + "' is declared vector but " + escape_input(ref.file) +
+                                        " holds scalars");
         continue;
       }
       loaded.vectors[ref.id] = std::make_shared<const VectorGrid>(std::move(*nrrd.vector));
     }
   }
-  if (!has_errors(result.diagnostics)) result.loaded = std::move(loaded);
+  const bool failed = list.has_errors() || has_errors(data_diagnostics);
+  result.diagnostics = list.take();
+  for (auto& d : data_diagnostics) result.diagnostics.push_back(std::move(d));
+  if (!failed) result.loaded = std::move(loaded);
   return result;
 }
 
