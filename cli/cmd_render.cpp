@@ -1,6 +1,7 @@
 // `vimg render IMAGE --gesture G.csv --out OUT.(wav|csv) [--rate HZ]` (spec section 4).
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "cli/command.hpp"
 #include "hal/actuator_profile.hpp"
 #include "hal/drv2605l_trace_sink.hpp"
+#include "hal/rest_on_exit.hpp"
 #include "player/drive_sinks.hpp"
 #include "player/gesture.hpp"
 #include "player/offline_render.hpp"
@@ -84,6 +86,9 @@ int run_render(const RenderArgs& a) {
   }
   OfflineRenderOptions options;
   options.sample_rate_hz = static_cast<double>(a.rate_hz);
+  // SIGINT/SIGTERM only set a flag; the render stops at the next block and the output is abandoned.
+  const SignalRestScope signals;
+  options.should_stop = [] { return rest_requested(); };
   std::unique_ptr<Drv2605lTraceSink> trace;
   if (!a.register_trace.empty()) {
     try {
@@ -95,6 +100,11 @@ int run_render(const RenderArgs& a) {
   }
   const OfflineRenderResult r =
       render_gesture(*scene, *gesture.gesture, trace ? static_cast<DriveSink&>(*trace) : *sink, options);
+  if (r.interrupted) {
+    sink->abort();
+    std::fprintf(stderr, "vimg render: interrupted; %s not written\n", a.out.c_str());
+    return rest_signal() == SIGTERM ? cmdline::kExitSigterm : cmdline::kExitSigint;
+  }
   if (trace && trace->error()) {
     std::fprintf(stderr, "vimg render: %s\n", trace->error()->c_str());
     return kExitFailure;

@@ -1,14 +1,18 @@
 #pragma once
-// DriveSink implementations for files and memory. File sinks write to `PATH.tmp-XXXX` next to the
-// target and rename it over the target on close(), so the output is complete or absent.
+// DriveSink implementations for files and memory. File sinks write through storage's atomic
+// writer (a temporary next to the target, created O_EXCL|O_NOFOLLOW, fsync'ed and renamed over the
+// target on close()), so the output is complete or absent, and abort() leaves nothing behind.
+// Samples are gathered in a buffer reserved at open() and written in large chunks; write() does
+// not allocate.
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "player/drive_sink.hpp"
+#include "storage/atomic_file.hpp"
 
 namespace vimg {
 
@@ -32,7 +36,7 @@ class MemorySink final : public DriveSink {
   bool closed_ = false;
 };
 
-// Common part of the file sinks: temporary file, error state, atomic rename.
+// Common part of the file sinks: the atomic writer, the sample buffer, the error state.
 class FileSink : public DriveSink {
  public:
   explicit FileSink(std::filesystem::path target);
@@ -47,17 +51,22 @@ class FileSink : public DriveSink {
   const std::optional<std::string>& error() const { return error_; }
 
  protected:
-  virtual void write_header(std::FILE* f, double sample_rate_hz) = 0;
-  virtual void write_samples(std::FILE* f, std::span<const float> drive, double block_start_time_s) = 0;
-  virtual void finish(std::FILE* f) = 0;  // e.g. patch sizes in the header
+  virtual void write_header(std::string& out, double sample_rate_hz) = 0;
+  // Appends the text or bytes of the samples; at most kMaxBytesPerSample each.
+  virtual void write_samples(std::string& out, std::span<const float> drive, double block_start_time_s) = 0;
+  // After the last sample has been written: patch what needs the total (e.g. sizes in a header).
+  virtual void finish(AtomicFileWriter& file) = 0;
   void fail(const std::string& what);
+  static constexpr std::size_t kMaxBytesPerSample = 80;
   std::uint64_t samples_written_ = 0;
   double sample_rate_hz_ = 0.0;
 
  private:
+  bool flush();
+
   std::filesystem::path target_;
-  std::filesystem::path temp_;
-  std::FILE* file_ = nullptr;
+  std::unique_ptr<AtomicFileWriter> file_;
+  std::string buffer_;
   std::optional<std::string> error_;
   bool done_ = false;
 };
@@ -68,9 +77,9 @@ class WavSink final : public FileSink {
   using FileSink::FileSink;
 
  protected:
-  void write_header(std::FILE* f, double sample_rate_hz) override;
-  void write_samples(std::FILE* f, std::span<const float> drive, double block_start_time_s) override;
-  void finish(std::FILE* f) override;
+  void write_header(std::string& out, double sample_rate_hz) override;
+  void write_samples(std::string& out, std::span<const float> drive, double block_start_time_s) override;
+  void finish(AtomicFileWriter& file) override;
 };
 
 // `time_s,drive` rows, one per sample.
@@ -79,9 +88,9 @@ class CsvSink final : public FileSink {
   using FileSink::FileSink;
 
  protected:
-  void write_header(std::FILE* f, double sample_rate_hz) override;
-  void write_samples(std::FILE* f, std::span<const float> drive, double block_start_time_s) override;
-  void finish(std::FILE*) override {}
+  void write_header(std::string& out, double sample_rate_hz) override;
+  void write_samples(std::string& out, std::span<const float> drive, double block_start_time_s) override;
+  void finish(AtomicFileWriter&) override {}
 };
 
 }  // namespace vimg

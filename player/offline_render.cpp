@@ -28,6 +28,11 @@ OfflineRenderResult render_gesture(const Scene& scene, const Gesture& gesture, D
   std::uint64_t n = 0;
   bool done = false;
   while (!done) {
+    if (options.should_stop && options.should_stop()) {
+      result.interrupted = true;
+      result.samples = n;
+      return result;
+    }
     const double block_start_s = result.start_time_s + static_cast<double>(n) * dt;
     std::size_t filled = 0;
     while (filled < block.size()) {

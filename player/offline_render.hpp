@@ -16,15 +16,20 @@ struct OfflineRenderOptions {
   std::size_t max_contacts = 512;
   // After the gesture ends, rendering goes on until every ring-down has finished, at most this long.
   double max_tail_s = 10.0;
+  // Asked before every block (e.g. "has SIGINT arrived?"); true ends the render at once, without
+  // closing the sink, so that the caller can abandon the output. Null: never.
+  bool (*should_stop)() = nullptr;
 };
 
 struct OfflineRenderResult {
   std::uint64_t samples = 0;
   double start_time_s = 0.0;  // time of the first sample (the gesture's start, or 0 if later)
   std::uint64_t refused_contacts = 0;
+  bool interrupted = false;  // should_stop() said so; the sink was not closed
 };
 
-// Samples are at start_time_s + n / rate. Calls sink.open(), write() per block, then close().
+// Samples are at start_time_s + n / rate. Calls sink.open(), write() per block, then close()
+// (unless interrupted).
 OfflineRenderResult render_gesture(const Scene& scene, const Gesture& gesture, DriveSink& sink,
                                    const OfflineRenderOptions& options = {});
 

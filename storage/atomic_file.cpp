@@ -72,6 +72,21 @@ bool AtomicFileWriter::write(std::string_view bytes) {
   return true;
 }
 
+bool AtomicFileWriter::write_at(std::uint64_t offset, std::string_view bytes) {
+  if (!ok()) return false;
+  while (!bytes.empty()) {
+    const ssize_t n = ::pwrite(fd_, bytes.data(), bytes.size(), static_cast<off_t>(offset));
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail("cannot write", errno);
+      return false;
+    }
+    bytes.remove_prefix(static_cast<std::size_t>(n));
+    offset += static_cast<std::uint64_t>(n);
+  }
+  return true;
+}
+
 std::optional<std::string> AtomicFileWriter::commit() {
   if (!ok()) {
     abort();

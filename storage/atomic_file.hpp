@@ -11,6 +11,7 @@
 //
 // Threads: an AtomicFileWriter belongs to one thread at a time; it may block on the disk, so it
 // never runs on a real-time thread (feed it through an SPSC ring from there).
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -37,6 +38,8 @@ class AtomicFileWriter {
 
   // Appends bytes. False (and error() set) on failure; later calls then fail too.
   bool write(std::string_view bytes);
+  // Overwrites bytes already written, at `offset` from the start (e.g. sizes in a header).
+  bool write_at(std::uint64_t offset, std::string_view bytes);
   // fsync, rename over the target, fsync the folder. Returns the error message, or nothing.
   std::optional<std::string> commit();
   // Removes the temporary file; the target is left as it was.

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "run_command.hpp"
 
@@ -64,6 +66,29 @@ TEST_F(RenderCommand, AnOrdinaryGestureStillRenders) {
   const RenderRun r = render(write_gesture("0,0,10,10,,down\n0.5,0,60,60,,up\n"));
   EXPECT_EQ(r.exit_code, 0) << r.out;
   EXPECT_GT(fs::file_size(dir_ / "out.wav"), 44u);
+}
+
+// A long render (a 9-minute gesture at 48 kHz) interrupted by a signal: exit 128 + signal, no
+// output and no temporary left in the folder.
+TEST_F(RenderCommand, AnInterruptedRenderLeavesNothingAndSaysWhichSignal) {
+  std::string rows = "0,0,5,5,,down\n";
+  for (int i = 1; i <= 540; ++i) rows += std::to_string(i) + ",0," + std::to_string(5 + (i % 50)) + ",60,,move\n";
+  rows += "541,0,5,5,,up\n";
+  const std::string gesture = write_gesture(rows);
+  for (const auto& [signal_name, expected] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
+    const std::string cmd = "cd '" + dir_.string() + "' && ('" VIMG_BINARY_DIR "/cli/vimg' render '" VIMG_SOURCE_DIR
+                            "/assets/examples/smiley.vimg' --gesture '" + gesture +
+                            "' --out long.wav --rate 48000 & pid=$!; sleep 0.5; kill -" + signal_name +
+                            " $pid; wait $pid; echo \"exit=$?\")";
+    const test::CommandRun r = test::run_command(cmd);
+    EXPECT_NE(r.out.find("exit=" + std::to_string(expected)), std::string::npos) << signal_name << "\n" << r.out;
+    EXPECT_NE(r.out.find("interrupted; long.wav not written"), std::string::npos) << r.out;
+    std::vector<std::string> left;
+    for (const auto& e : fs::directory_iterator(dir_)) {
+      if (e.path().filename() != "g.csv") left.push_back(e.path().filename().string());
+    }
+    EXPECT_TRUE(left.empty()) << signal_name << ": left " << (left.empty() ? "" : left.front());
+  }
 }
 
 }  // namespace
