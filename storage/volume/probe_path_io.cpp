@@ -1,8 +1,19 @@
 #include "storage/volume/probe_path_io.hpp"
 
+#include <cmath>
+
+#include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 
 namespace vimg {
+
+namespace {
+
+constexpr const char* kColumns[] = {"time_s", "x_mm", "y_mm", "z_mm"};
+
+std::string limit_text(double limit) { return format_decimal(limit); }
+
+}  // namespace
 
 ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::string& file_name) {
   ProbePathParseResult result;
@@ -11,6 +22,7 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
   auto error = [&](int line, std::string_view message) { list.error(line, message); };
   int line = 0;
   bool header_seen = false;
+  std::size_t rows = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
     std::size_t eol = text.find('\n', pos);
@@ -24,6 +36,10 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
       header_seen = true;
       if (row != "time_s,x_mm,y_mm,z_mm") error(line, "the header must be 'time_s,x_mm,y_mm,z_mm'");
       continue;
+    }
+    if (++rows > kMaxProbePathRows) {
+      error(line, "more than " + std::to_string(kMaxProbePathRows) + " rows (limit " + std::to_string(kMaxProbePathRows) + ")");
+      break;
     }
     double v[4];
     int n = 0;
@@ -42,7 +58,15 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
         bad = true;
         break;
       }
-      v[n++] = std::get<double>(parsed);
+      const double value = std::get<double>(parsed);
+      const double limit = n == 0 ? kMaxProbeTimeS : kMaxProbeCoordinateMm;
+      if (std::abs(value) > limit) {
+        error(line, "column " + std::to_string(n + 1) + " (" + kColumns[n] + ") '" + escape_input(cell) + "' is beyond " +
+                        limit_text(limit) + (n == 0 ? " s" : " mm") + " (limit " + limit_text(limit) + ")");
+        bad = true;
+        break;
+      }
+      v[n++] = value;
       if (comma == std::string_view::npos) break;
       row.remove_prefix(comma + 1);
     }
@@ -55,6 +79,11 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
       error(line, "time must increase strictly");
       continue;
     }
+    if (!path.empty() && v[0] - path.front().time_s > kMaxProbePathDurationS) {
+      error(line, "the path lasts more than " + limit_text(kMaxProbePathDurationS) + " s (limit " +
+                      limit_text(kMaxProbePathDurationS) + ")");
+      break;
+    }
     path.push_back({v[0], Vec3{v[1], v[2], v[3]} * 1e-3});
   }
   if (!header_seen) error(0, "empty file, expected the header 'time_s,x_mm,y_mm,z_mm'");
@@ -62,6 +91,13 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
   if (!list.has_errors()) result.path = std::move(path);
   result.diagnostics = list.take();
   return result;
+}
+
+std::optional<std::size_t> probe_render_rows(double duration_s, double rate_hz) {
+  if (!(duration_s >= 0.0) || !(rate_hz > 0.0) || !std::isfinite(duration_s) || !std::isfinite(rate_hz)) return std::nullopt;
+  const double steps = std::floor(duration_s * rate_hz + 1e-9) + 1.0;
+  if (!(steps <= static_cast<double>(kMaxProbeRenderRows))) return std::nullopt;
+  return static_cast<std::size_t>(steps);
 }
 
 std::string write_probe_forces_csv(const std::vector<ProbeForceRow>& rows) {
