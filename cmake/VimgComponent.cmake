@@ -16,9 +16,10 @@ function(vimg_component name dir)
   endif()
 endfunction()
 
-# vimg_test_dir(NAME DIR LIBS ... LABELS unit|threaded|gui): one GoogleTest executable of every .cpp in DIR.
+# vimg_test_dir(NAME DIR LIBS ... LABELS unit|threaded|gui [SERIAL]): one GoogleTest executable of
+# every .cpp in DIR. SERIAL: its tests run alone (timing-sensitive runs of real-time loops).
 function(vimg_test_dir name dir)
-  cmake_parse_arguments(ARG "" "" "LIBS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "SERIAL" "" "LIBS;LABELS" ${ARGN})
   file(GLOB sources CONFIGURE_DEPENDS ${dir}/*.cpp)
   if(NOT sources)
     return()
@@ -33,6 +34,10 @@ function(vimg_test_dir name dir)
   if(NOT label_count EQUAL 1)
     message(FATAL_ERROR "vimg_test_dir(${name}): give exactly one label")
   endif()
+  set(serial FALSE)
+  if(ARG_SERIAL)
+    set(serial TRUE)
+  endif()
   gtest_discover_tests(${name} DISCOVERY_MODE PRE_TEST DISCOVERY_TIMEOUT 60
-    PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT 300)
+    PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT 300 RUN_SERIAL ${serial})
 endfunction()
