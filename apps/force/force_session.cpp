@@ -5,21 +5,17 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "apps/force/status_line.hpp"
 #include "cmdline/command_line.hpp"
-#include "hal/force/hid_force_finder.hpp"
-#include "hal/force/simulated_force_device.hpp"
+#include "hal/force/force_device_opener.hpp"
 #include "player/haptic/force_log.hpp"
 #include "player/haptic/force_run_report.hpp"
 #include "realtime/clock.hpp"
 #include "storage/atomic_file.hpp"
 #include "storage/number_text.hpp"
-#include "storage/volume/probe_path_io.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
 namespace vimg::force_app {
@@ -33,59 +29,11 @@ void print_diagnostics(const std::vector<Diagnostic>& diagnostics) {
   for (const auto& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
 }
 
-// The probe path as the simulated hand's path, starting at loop time 0.
-std::optional<std::vector<HandPathPoint>> load_hand_path(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    std::fprintf(stderr, "%s: error: cannot open file\n", file.c_str());
-    return std::nullopt;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  const ProbePathParseResult parsed = parse_probe_path_csv(text.str(), file);
-  print_diagnostics(parsed.diagnostics);
-  if (!parsed.path) return std::nullopt;
-  std::vector<HandPathPoint> hand;
-  const double t0 = parsed.path->front().time_s;
-  for (const ProbePathPoint& p : *parsed.path) hand.push_back({p.time_s - t0, p.position_m});
-  return hand;
-}
-
 // A file written at the end must have a folder now, so that a typo fails before the device moves.
 bool folder_exists_for(const std::string& file) {
   const std::filesystem::path parent = std::filesystem::path(file).parent_path();
   std::error_code ec;
   return parent.empty() || std::filesystem::is_directory(parent, ec);
-}
-
-struct OpenedDevice {
-  std::unique_ptr<ForceDevice> device;
-  std::string description;
-};
-
-OpenedDevice open_device(const ForceArgs& args, const DeviceProfile& profile, std::vector<HandPathPoint> hand) {
-  OpenedDevice opened;
-  if (args.is_sim()) {
-    // The simulated device is the one the scene describes.
-    ForceDeviceLimits limits;
-    limits.max_force_N = profile.max_force_N;
-    limits.max_stiffness_N_per_m = profile.max_stiffness_N_per_m;
-    limits.workspace_m = profile.workspace_mm * 1e-3;
-    opened.device = std::make_unique<SimulatedForceDevice>(std::move(hand), HandModel{}, limits);
-    opened.description = args.path_file.empty() ? "sim, the hand at rest at the workspace centre" : "sim, the hand on " + args.path_file;
-    return opened;
-  }
-  HidapiTransportHost host;
-  HidForceSearch found = find_hid_force_device(host, args.hid_path);
-  if (!found.device) {
-    error(found.report);
-    return opened;
-  }
-  char ids[16];
-  std::snprintf(ids, sizeof ids, "%04x:%04x", found.opened.vendor_id, found.opened.product_id);
-  opened.description = "hid " + found.opened.path + " (" + ids + (found.opened.product.empty() ? "" : " " + found.opened.product) + ")";
-  opened.device = std::move(found.device);
-  return opened;
 }
 
 int interrupted(int signal) { return signal == SIGTERM ? cmdline::kExitSigterm : cmdline::kExitSigint; }
@@ -97,11 +45,12 @@ int run_force_session(const ForceArgs& args, const std::atomic<int>& signal_rece
   print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) return cmdline::kExitFailure;
   const DeviceProfile profile = loaded.loaded->scene.device;
-  std::vector<HandPathPoint> hand{{0.0, Vec3{}}};  // the workspace centre
+  std::vector<HandPathPoint> hand;
   if (!args.path_file.empty()) {
-    auto path = load_hand_path(args.path_file);
-    if (!path) return cmdline::kExitFailure;
-    hand = std::move(*path);
+    std::vector<Diagnostic> problems;
+    hand = load_hand_path(args.path_file, problems);
+    print_diagnostics(problems);
+    if (hand.empty()) return cmdline::kExitFailure;
   }
   for (const std::string* file : {&args.log_file, &args.telemetry_file}) {
     if (!file->empty() && !folder_exists_for(*file)) {
@@ -109,16 +58,16 @@ int run_force_session(const ForceArgs& args, const std::atomic<int>& signal_rece
       return cmdline::kExitFailure;
     }
   }
-  OpenedDevice opened = open_device(args, profile, std::move(hand));
-  if (!opened.device) return cmdline::kExitFailure;
+  OpenedForceDevice opened =
+      open_force_device(args.device, profile, std::move(hand),
+                        args.path_file.empty() ? "the hand at rest at the workspace centre" : "the hand on " + args.path_file);
+  if (!opened.device) {
+    error(opened.error);
+    return cmdline::kExitFailure;
+  }
   if (const int s = signal_received.load()) return interrupted(s);  // nothing has moved yet
 
-  HapticLoopConfig config;
-  config.rate_hz = profile.rate_hz;
-  config.safety.max_force_N = profile.max_force_N;
-  config.safety.gate_force_N = profile.gate_force_N;
-  config.safety.ramp_time_s = profile.ramp_time_ms * 1e-3;
-  config.realtime_priority = args.realtime_priority;
+  HapticLoopConfig config = haptic_loop_config(profile, args.realtime_priority);
   // Two seconds of rows: the writer drains the ring every 5 ms.
   config.log_capacity_rows = args.log_file.empty() ? 0 : static_cast<std::size_t>(2.0 * profile.rate_hz);
   HapticLoop loop(*opened.device, config);
