@@ -1,5 +1,7 @@
-// vimg-probe: explore a volume scene with the mouse (docs/volume.md, "Virtual probe").
-//   vimg-probe SCENE [--frames N] [--move X_MM,Z_MM] [--screenshot OUT.bmp]   (see --help)
+// vimg-probe: explore a volume scene with the mouse, or watch the scene's haptic loop run on a
+// force device (docs/volume.md, "Virtual probe"; see --help).
+//   vimg-probe SCENE [--frames N] [--move X_MM,Z_MM] [--screenshot OUT.bmp]
+//   vimg-probe SCENE --device sim|hid[:PATH] [--path P.csv] [--frames N] [--screenshot OUT.bmp]
 // The window shows the slice y = const of the scene's first scalar data (x across, z down), the
 // flow of its first vector data as ticks, the probe (white), and the kinaesthetic force (red
 // line, 20 px/N). The mouse moves the probe in the slice; the wheel moves the slice in y. The
@@ -10,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <memory>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -17,6 +21,9 @@
 
 #include "apps/probe/probe_args.hpp"
 #include "apps/probe/probe_session.hpp"
+#include "cmdline/command_line.hpp"
+#include "hal/force/force_device_opener.hpp"
+#include "hal/rest_on_exit.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
 namespace {
@@ -99,6 +106,31 @@ int main(int argc, char** argv) {
   view.width = static_cast<int>(scene.device.workspace_mm.x * kPxPerMm);
   view.height = static_cast<int>(scene.device.workspace_mm.z * kPxPerMm);
 
+  // Device mode: the scene's haptic loop runs on the force device, as in vimg-force; the window
+  // shows what the loop reads and sends. SIGINT/SIGTERM stop it (zero force first).
+  std::unique_ptr<vimg::ForceDevice> device;
+  std::unique_ptr<vimg::HapticLoop> loop;
+  std::string device_description;
+  const vimg::SignalRestScope signals;
+  if (!args.device.empty()) {
+    std::vector<vimg::HandPathPoint> hand;
+    if (!args.path_file.empty()) {
+      std::vector<vimg::Diagnostic> problems;
+      hand = vimg::load_hand_path(args.path_file, problems);
+      for (const auto& d : problems) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+      if (hand.empty()) return 1;
+    }
+    vimg::OpenedForceDevice opened = vimg::open_force_device(
+        args.device, scene.device, std::move(hand),
+        args.path_file.empty() ? "the hand at rest at the workspace centre" : "the hand on " + args.path_file);
+    if (!opened.device) return fail(opened.error);
+    device = std::move(opened.device);
+    device_description = opened.description;
+    loop = std::make_unique<vimg::HapticLoop>(*device, vimg::haptic_loop_config(scene.device, args.realtime_priority));
+    loop->submit_scene(vimg::build_haptic_scene(*loaded.loaded));
+    if (!loop->start()) return fail("cannot start the haptic loop at the scene's rate (100..4000 Hz)");
+  }
+
   if (SDL_Init(SDL_INIT_VIDEO) != 0) return fail(std::string("SDL: ") + SDL_GetError());
   SDL_Window* window = SDL_CreateWindow("vimg-probe", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, view.width, view.height, 0);
   if (!window) return fail(std::string("SDL window: ") + SDL_GetError());
@@ -108,7 +140,7 @@ int main(int argc, char** argv) {
 
   // Audio is optional: without a device the probe still shows the forces.
   SDL_AudioDeviceID audio = 0;
-  if (SDL_InitSubSystem(SDL_INIT_AUDIO) == 0) {
+  if (!loop && SDL_InitSubSystem(SDL_INIT_AUDIO) == 0) {
     SDL_AudioSpec want{}, have{};
     want.freq = static_cast<int>(kAudioRate);
     want.format = AUDIO_F32SYS;
@@ -139,11 +171,27 @@ int main(int argc, char** argv) {
       mouse_x = static_cast<int>((move_x - view.lo_mm.x) * kPxPerMm);
       mouse_y = static_cast<int>((move_z - view.lo_mm.z) * kPxPerMm);
     }
+    if (vimg::rest_requested()) break;
     const Uint64 now = SDL_GetPerformanceCounter();
     const double elapsed = frames > 0 ? 1.0 / 60.0 : std::min(0.1, double(now - last) / double(SDL_GetPerformanceFrequency()));
     last = now;
     samples.clear();
-    session.advance(elapsed, view.to_world_m(mouse_x, mouse_y), audio_axis, samples);
+    vimg::probe::ProbeForces f = session.latest();
+    vimg::HapticLoopStatus status;
+    if (loop) {
+      if (frames > 0) SDL_Delay(16);  // scripted: about 60 frames a second of the running loop
+      status = loop->status();
+      if (!loop->running()) break;  // a fault: reported below
+      // The slice follows the probe (redrawn when it moves by a millimetre or more).
+      if (std::abs(status.position_m.y * 1e3 - view.y_mm) >= 1.0) {
+        view.y_mm = std::clamp(status.position_m.y * 1e3, view.lo_mm.y, view.hi_mm.y);
+        slice_dirty = true;
+      }
+      f = {status.position_m, status.force_N, Vec3{}, status.force_N};
+    } else {
+      session.advance(elapsed, view.to_world_m(mouse_x, mouse_y), audio_axis, samples);
+      f = session.latest();
+    }
     if (audio) {
       // Keep at most 60 ms queued: a late vibration is worse than none.
       if (SDL_GetQueuedAudioSize(audio) > static_cast<Uint32>(0.06 * kAudioRate * sizeof(float))) SDL_ClearQueuedAudio(audio);
@@ -160,7 +208,6 @@ int main(int argc, char** argv) {
       slice_dirty = false;
     }
     SDL_RenderCopy(renderer, slice, nullptr, nullptr);
-    const vimg::probe::ProbeForces& f = session.latest();
     const SDL_Point p = view.to_screen(f.position_m);
     SDL_SetRenderDrawColor(renderer, 230, 60, 50, 255);
     SDL_RenderDrawLine(renderer, p.x, p.y, p.x + static_cast<int>(20 * f.kinaesthetic_N.x * kPxPerMm),
@@ -172,10 +219,16 @@ int main(int argc, char** argv) {
     SDL_SetRenderDrawColor(renderer, 250, 200, 60, 255);
     SDL_Rect bar{0, view.height - 6, static_cast<int>(std::min(1.0, vimg::norm(f.vibrotactile_N)) * view.width), 6};
     SDL_RenderFillRect(renderer, &bar);
-    char title[160];
-    std::snprintf(title, sizeof title, "vimg-probe  x %.1f  y %.1f  z %.1f mm   |F| %.2f N  kin %.2f N  vib %.2f N",
-                  f.position_m.x * 1e3, f.position_m.y * 1e3, f.position_m.z * 1e3, vimg::norm(f.total_N),
-                  vimg::norm(f.kinaesthetic_N), vimg::norm(f.vibrotactile_N));
+    char title[200];
+    if (loop) {
+      std::snprintf(title, sizeof title, "vimg-probe  %s  %s  %.0f Hz  p99 %.0f us  x %.1f  y %.1f  z %.1f mm   |F| sent %.2f N",
+                    args.device.c_str(), vimg::describe(status.state), status.timing.rate_hz, status.timing.jitter_p99_us,
+                    f.position_m.x * 1e3, f.position_m.y * 1e3, f.position_m.z * 1e3, vimg::norm(f.total_N));
+    } else {
+      std::snprintf(title, sizeof title, "vimg-probe  x %.1f  y %.1f  z %.1f mm   |F| %.2f N  kin %.2f N  vib %.2f N",
+                    f.position_m.x * 1e3, f.position_m.y * 1e3, f.position_m.z * 1e3, vimg::norm(f.total_N),
+                    vimg::norm(f.kinaesthetic_N), vimg::norm(f.vibrotactile_N));
+    }
     SDL_SetWindowTitle(window, title);
     if (frames > 0 && frame == frames - 1 && !screenshot.empty()) {
       SDL_Surface* shot = SDL_CreateRGBSurfaceWithFormat(0, view.width, view.height, 32, SDL_PIXELFORMAT_ARGB8888);
@@ -189,10 +242,22 @@ int main(int argc, char** argv) {
     if (frames > 0 && frame + 1 >= frames) break;
     if (frames == 0) SDL_Delay(5);
   }
+  int code = 0;
+  if (loop) {
+    loop->stop();  // zero force before anything else
+    const vimg::HapticLoopStatus end = loop->status();
+    std::printf("vimg-probe: %s: %llu cycles at %.1f Hz, max |F| %.3f N, %s\n", device_description.c_str(),
+                static_cast<unsigned long long>(end.cycles), end.timing.rate_hz, end.max_force_N, vimg::describe(end.state));
+    if (loop->failed()) {
+      std::fprintf(stderr, "vimg-probe: error: device fault: %s\n", loop->fault_text().c_str());
+      code = 1;
+    }
+  }
+  if (vimg::rest_requested()) code = vimg::rest_signal() == SIGTERM ? vimg::cmdline::kExitSigterm : vimg::cmdline::kExitSigint;
   if (audio) SDL_CloseAudioDevice(audio);
   SDL_DestroyTexture(slice);
   SDL_DestroyRenderer(renderer);
   SDL_DestroyWindow(window);
   SDL_Quit();
-  return 0;
+  return code;
 }

@@ -89,6 +89,10 @@ TEST(ProgramConventions, ProbeRefusesEndlessFramesAndNonFiniteMoves) {
   EXPECT_EQ(run_program(probe, "scene.xml --frames 0").exit_code, 2);
   EXPECT_EQ(run_program(probe, "scene.xml --frames 3 --move nan,1").exit_code, 2);
   EXPECT_EQ(run_program(probe, "scene.xml --move 1,1").exit_code, 2);  // --move needs --frames
+  EXPECT_EQ(run_program(probe, "scene.xml --path p.csv").exit_code, 2);  // --path needs --device sim
+  EXPECT_EQ(run_program(probe, "scene.xml --device hid --path p.csv").exit_code, 2);
+  EXPECT_EQ(run_program(probe, "scene.xml --device usb").exit_code, 2);
+  EXPECT_EQ(run_program(probe, "scene.xml --device sim --frames 2 --move 1,1").exit_code, 2);
 }
 
 TEST(ProgramConventions, EditorRefusesBadNumbers) {
