@@ -37,15 +37,7 @@ Bos1901Driver::~Bos1901Driver() { close(); }
 
 template <typename Attempt>
 int Bos1901Driver::retry(Attempt&& attempt) {
-  std::int64_t backoff_us = options_.first_backoff_us;
-  for (int tries = 0;; ++tries) {
-    const int error = attempt();
-    if (error == 0 || !transient_error(error) || tries >= options_.max_retries) {
-      return error;
-    }
-    clock_.sleep_for_us(backoff_us);  // wait on the device, then try again
-    backoff_us *= 2;
-  }
+  return retry_transfer(clock_, options_.max_retries, options_.first_backoff_us, attempt);
 }
 
 std::uint16_t Bos1901Driver::send(std::uint16_t command) {
@@ -66,7 +58,7 @@ std::uint16_t Bos1901Driver::send(std::uint16_t command) {
 }
 
 bool Bos1901Driver::exchange(std::uint16_t command, std::uint16_t& sdo) noexcept {
-  if (gone_) return false;
+  if (transfer_.gone) return false;
   const auto tx = bytes_of(command);
   std::array<std::uint8_t, 2> rx{};
   if (!account(retry([&] { return bus_.try_transfer(tx, rx); }))) return false;
@@ -75,21 +67,7 @@ bool Bos1901Driver::exchange(std::uint16_t command, std::uint16_t& sdo) noexcept
 }
 
 bool Bos1901Driver::account(int error) noexcept {
-  if (error == 0) {
-    consecutive_failures_ = 0;
-    transfer_failure_reported_ = false;
-    return true;
-  }
-  ++consecutive_failures_;
-  if (device_gone_error(error) || consecutive_failures_ >= options_.failures_until_gone) {
-    gone_ = true;
-    faults_.push({FaultKind::device_gone, error, clock_.now_us()});
-    link_.take_down();  // after the push and the last transfer: the service owns the device now
-  } else if (!transfer_failure_reported_) {
-    transfer_failure_reported_ = true;
-    faults_.push({FaultKind::transfer_failed, error, clock_.now_us()});
-  }
-  return false;
+  return transfer_.account(error, options_.failures_until_gone, faults_, link_, clock_);
 }
 
 void Bos1901Driver::start_stream() {
@@ -122,10 +100,8 @@ void Bos1901Driver::open(double sample_rate_hz) {
   }
   start_stream();
   link_.put_up();
-  gone_ = false;
+  transfer_.reset();
   stopped_ = false;
-  consecutive_failures_ = 0;
-  transfer_failure_reported_ = false;
   playing_ = true;
 }
 
@@ -179,15 +155,13 @@ void Bos1901Driver::write(std::span<const float> drive, double) {
     keep_pace(drive.size());
     return;
   }
-  if (gone_) {
+  if (transfer_.gone) {
     if (!link_.up()) {
       keep_pace(drive.size());  // the service is reconnecting: output is skipped, the bus left alone
       return;
     }
     // reconnect() restarted the stream from 0 V.
-    gone_ = false;
-    consecutive_failures_ = 0;
-    transfer_failure_reported_ = false;
+    transfer_.reset();
   }
   if (rest_requested()) {
     stop(FaultKind::rest_requested);
@@ -200,7 +174,7 @@ void Bos1901Driver::write(std::span<const float> drive, double) {
     handle_status(status);
   }
   for (std::size_t i = 0; i < drive.size(); ++i) {
-    if (stopped_ || gone_) {
+    if (stopped_ || transfer_.gone) {
       keep_pace(drive.size() - i);
       return;
     }
@@ -238,7 +212,7 @@ void Bos1901Driver::close() {
   if (!link_.up()) {
     return;  // gone: nothing reaches the chip
   }
-  gone_ = false;  // the service may have reconnected it since the last write()
+  transfer_.gone = false;  // the service may have reconnected it since the last write()
   std::uint16_t status = 0;
   if (!stopped_ && push_sample(0)) {  // end at 0 V
     for (int poll = 0; poll <= kFifoDepth + 1; ++poll) {

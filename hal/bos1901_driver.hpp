@@ -29,6 +29,7 @@
 
 #include "hal/actuator_profile.hpp"
 #include "hal/fault_log.hpp"
+#include "hal/transfer_retry.hpp"
 #include "hal/serviced_device.hpp"
 #include "hal/spi_bus.hpp"
 #include "player/drive_sink.hpp"
@@ -96,10 +97,8 @@ class Bos1901Driver final : public DriveSink, public ServicedDevice {
   bool restart_from_zero_ = false;
 
   // Render thread only (and the control thread in open() and close()).
-  bool gone_ = false;  // the render thread took the link down and has not seen it up again
+  TransferAccount transfer_;  // gone: the render thread took the link down and has not seen it up again
   bool stopped_ = false;
-  bool transfer_failure_reported_ = false;
-  int consecutive_failures_ = 0;
   std::int64_t skip_until_us_ = 0;
 
   std::atomic<std::uint64_t> underruns_{0};

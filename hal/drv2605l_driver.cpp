@@ -60,15 +60,7 @@ Drv2605lDriver::~Drv2605lDriver() {
 
 template <typename Attempt>
 int Drv2605lDriver::retry(Attempt&& attempt) {
-  std::int64_t backoff_us = options_.first_backoff_us;
-  for (int tries = 0;; ++tries) {
-    const int error = attempt();
-    if (error == 0 || !transient_error(error) || tries >= options_.max_retries) {
-      return error;
-    }
-    clock_.sleep_for_us(backoff_us);  // wait on the device, then try again
-    backoff_us *= 2;
-  }
+  return retry_transfer(clock_, options_.max_retries, options_.first_backoff_us, attempt);
 }
 
 void Drv2605lDriver::write_reg(std::uint8_t reg, std::uint8_t value) {
@@ -86,31 +78,17 @@ std::uint8_t Drv2605lDriver::read_reg(std::uint8_t reg) {
 }
 
 bool Drv2605lDriver::rt_write_reg(std::uint8_t reg, std::uint8_t value) noexcept {
-  if (gone_) return false;
+  if (transfer_.gone) return false;
   return account(retry([&] { return try_write_register(bus_, address_, reg, value); }));
 }
 
 bool Drv2605lDriver::rt_read_reg(std::uint8_t reg, std::uint8_t& value) noexcept {
-  if (gone_) return false;
+  if (transfer_.gone) return false;
   return account(retry([&] { return try_read_register(bus_, address_, reg, value); }));
 }
 
 bool Drv2605lDriver::account(int error) noexcept {
-  if (error == 0) {
-    consecutive_failures_ = 0;
-    transfer_failure_reported_ = false;
-    return true;
-  }
-  ++consecutive_failures_;
-  if (device_gone_error(error) || consecutive_failures_ >= options_.failures_until_gone) {
-    gone_ = true;
-    faults_.push({FaultKind::device_gone, error, clock_.now_us()});
-    link_.take_down();  // after the push and the last transfer: the service owns the device now
-  } else if (!transfer_failure_reported_) {
-    transfer_failure_reported_ = true;
-    faults_.push({FaultKind::transfer_failed, error, clock_.now_us()});
-  }
-  return false;
+  return transfer_.account(error, options_.failures_until_gone, faults_, link_, clock_);
 }
 
 void Drv2605lDriver::initialize() {
@@ -228,10 +206,8 @@ void Drv2605lDriver::open(double sample_rate_hz) {
   follower_.configure(sample_rate_hz, profile_.resonance_hz, options_.release_time_s);
   schedule_.start(sample_rate_hz, options_.update_rate_hz);
   stopped_ = false;
-  gone_ = false;
+  transfer_.reset();
   rest_reported_ = false;
-  consecutive_failures_ = 0;
-  transfer_failure_reported_ = false;
   pulse_code_ = 0;
   if (open_loop_) {
     select_loop(false, profile_.resonance_hz);
@@ -280,7 +256,7 @@ void Drv2605lDriver::update(std::int64_t time_us) noexcept {
   if (options_.pace_writes) {
     clock_.sleep_until_us(time_us);
   }
-  if (gone_) {
+  if (transfer_.gone) {
     if (!link_.up()) {
       return;  // the service is reconnecting: output is skipped, the bus left alone
     }
@@ -288,7 +264,7 @@ void Drv2605lDriver::update(std::int64_t time_us) noexcept {
   }
   if (time_us - last_status_poll_us_ >= std::llround(options_.status_poll_interval_s * 1e6)) {
     poll_status(time_us);
-    if (stopped_ || gone_) {
+    if (stopped_ || transfer_.gone) {
       return;
     }
   }
@@ -314,7 +290,7 @@ void Drv2605lDriver::update(std::int64_t time_us) noexcept {
         last_period_code_ = period;
       }
     }
-    if (gone_) {
+    if (transfer_.gone) {
       return;  // lost just now: the loop mode is the service's from here on
     }
   }
@@ -337,11 +313,9 @@ void Drv2605lDriver::update(std::int64_t time_us) noexcept {
 
 void Drv2605lDriver::resume(std::int64_t time_us) noexcept {
   // reconnect() left the chip initialized, in RTP mode at 0.
-  gone_ = false;
+  transfer_.reset();
   last_rtp_code_ = 0;
   pulse_code_ = 0;
-  consecutive_failures_ = 0;
-  transfer_failure_reported_ = false;
   last_status_poll_us_ = time_us;
 }
 
@@ -402,7 +376,7 @@ void Drv2605lDriver::enter_rest() noexcept {
   if (!link_.up() || !initialized_) {
     return;  // gone: nothing reaches the chip (and the device state is the service's)
   }
-  if (gone_) {
+  if (transfer_.gone) {
     resume(clock_.now_us());  // the service reconnected it since the last update
   }
   retry([&] { return try_write_register(bus_, address_, kRtpInput, 0); });

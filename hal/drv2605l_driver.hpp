@@ -49,6 +49,7 @@
 #include "hal/drv2605l_calibration.hpp"
 #include "hal/envelope_follower.hpp"
 #include "hal/fault_log.hpp"
+#include "hal/transfer_retry.hpp"
 #include "hal/gpio_output.hpp"
 #include "hal/i2c_bus.hpp"
 #include "hal/serviced_device.hpp"
@@ -135,11 +136,9 @@ class Drv2605lDriver final : public DriveSink, public ServicedDevice {
   // Render thread only (and the control thread in open()).
   EnvelopeFollower follower_;
   UpdateSchedule schedule_;
-  bool gone_ = false;  // the render thread took the link down and has not seen it up again
+  TransferAccount transfer_;  // gone: the render thread took the link down and has not seen it up again
   bool stopped_ = false;
-  bool transfer_failure_reported_ = false;
   bool rest_reported_ = false;
-  int consecutive_failures_ = 0;
   std::uint8_t last_rtp_code_ = 0;
   std::uint8_t pulse_code_ = 0;
   std::int64_t pulse_start_us_ = 0;

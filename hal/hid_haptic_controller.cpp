@@ -75,20 +75,12 @@ std::optional<HidWaveform> HidHapticController::find(std::uint16_t usage) const 
 
 template <typename Attempt>
 int HidHapticController::retry(Attempt&& attempt) {
-  std::int64_t backoff_us = options_.first_backoff_us;
-  for (int tries = 0;; ++tries) {
-    const int error = attempt();
-    if (error == 0 || !transient_error(error) || tries >= options_.max_retries) {
-      return error;
-    }
-    clock_.sleep_for_us(backoff_us);  // wait on the device, then try again
-    backoff_us *= 2;
-  }
+  return retry_transfer(clock_, options_.max_retries, options_.first_backoff_us, attempt);
 }
 
 bool HidHapticController::send_trigger(std::uint8_t ordinal, double intensity, std::uint8_t repeat,
                                        std::uint16_t period_ms) noexcept {
-  if (gone_ || !device_) return false;
+  if (transfer_.gone || !device_) return false;
   const std::array<std::uint8_t, kTriggerReportSize> report{
       kTriggerReport, ordinal, static_cast<std::uint8_t>(std::lround(std::clamp(intensity, 0.0, 1.0) * 100.0)),
       repeat, static_cast<std::uint8_t>(period_ms & 0xFF), static_cast<std::uint8_t>(period_ms >> 8)};
@@ -96,21 +88,7 @@ bool HidHapticController::send_trigger(std::uint8_t ordinal, double intensity, s
 }
 
 bool HidHapticController::account(int error) noexcept {
-  if (error == 0) {
-    consecutive_failures_ = 0;
-    transfer_failure_reported_ = false;
-    return true;
-  }
-  ++consecutive_failures_;
-  if (device_gone_error(error) || consecutive_failures_ >= options_.failures_until_gone) {
-    gone_ = true;
-    faults_.push({FaultKind::device_gone, error, clock_.now_us()});
-    link_.take_down();  // after the push and the last write: the service owns the device now
-  } else if (!transfer_failure_reported_) {
-    transfer_failure_reported_ = true;
-    faults_.push({FaultKind::transfer_failed, error, clock_.now_us()});
-  }
-  return false;
+  return transfer_.account(error, options_.failures_until_gone, faults_, link_, clock_);
 }
 
 void HidHapticController::trigger(std::uint16_t waveform_usage, double intensity, std::uint8_t repeat_count,
@@ -129,9 +107,7 @@ void HidHapticController::open(double sample_rate_hz) {
     connect();
     link_.put_up();
   }
-  gone_ = false;
-  consecutive_failures_ = 0;
-  transfer_failure_reported_ = false;
+  transfer_.reset();
   follower_.configure(sample_rate_hz, options_.resonance_hz, 0.003);
   schedule_.start(sample_rate_hz, 1000.0);  // 1 kHz decisions
   active_ = buzzing_ = onset_pending_ = false;
@@ -151,14 +127,12 @@ void HidHapticController::write(std::span<const float> drive, double block_start
 
 void HidHapticController::resume() noexcept {
   // reconnect() found and opened the device again; nothing plays on it yet.
-  gone_ = false;
+  transfer_.reset();
   active_ = buzzing_ = onset_pending_ = false;
-  consecutive_failures_ = 0;
-  transfer_failure_reported_ = false;
 }
 
 void HidHapticController::update(std::int64_t time_us) noexcept {
-  if (gone_) {
+  if (transfer_.gone) {
     if (!link_.up()) {
       return;  // the service is reconnecting: nothing is sent
     }

@@ -32,6 +32,7 @@
 #include "hal/update_schedule.hpp"
 #include "hal/envelope_follower.hpp"
 #include "hal/fault_log.hpp"
+#include "hal/transfer_retry.hpp"
 #include "hal/hid_device.hpp"
 #include "hal/serviced_device.hpp"
 #include "player/drive_sink.hpp"
@@ -109,12 +110,10 @@ class HidHapticController final : public DriveSink, public ServicedDevice {
   // Render thread only (and the control thread in open() and close()).
   EnvelopeFollower follower_;
   UpdateSchedule schedule_;
-  bool gone_ = false;  // the render thread took the link down and has not seen it up again
+  TransferAccount transfer_;  // gone: the render thread took the link down and has not seen it up again
   bool active_ = false;
   bool buzzing_ = false;
   bool onset_pending_ = false;
-  bool transfer_failure_reported_ = false;
-  int consecutive_failures_ = 0;
   double last_intensity_ = 0.0;
   std::int64_t onset_us_ = 0;
   std::int64_t last_trigger_us_ = 0;
