@@ -6,6 +6,14 @@
 
 namespace vimg {
 
+// Fuzzing builds (VIMG_FUZZING, the fuzz preset) divide the size and count limits by 64, so that
+// libFuzzer's inputs (-max_len in .ci/run) reach every limit and the code that refuses it.
+#ifdef VIMG_FUZZING
+inline constexpr std::size_t kLimitScale = 64;
+#else
+inline constexpr std::size_t kLimitScale = 1;
+#endif
+
 // --- The image format (spec section 1) -------------------------------------------------------------
 inline constexpr int kFormatMajor = 1;               // the format version this code reads and writes
 inline constexpr int kFormatMinor = 0;
@@ -15,17 +23,17 @@ inline constexpr int kMaxGroupDepth = 32;            // groups nest at most this
 
 // --- File sizes (bytes read before any parsing) ------------------------------------------------------
 inline constexpr std::size_t kMiB = std::size_t{1} << 20;
-inline constexpr std::size_t kMaxImageFileBytes = 64 * kMiB;  // image XML, a PNG file, the XML inside a PNG
-inline constexpr std::size_t kMaxSceneFileBytes = 4 * kMiB;   // a volume scene (.vscene.xml)
-inline constexpr std::size_t kMaxCsvFileBytes = 64 * kMiB;    // a gesture or probe-path CSV
-inline constexpr std::size_t kMaxNrrdHeaderBytes = 1 * kMiB;  // the text header of a NRRD volume
+inline constexpr std::size_t kMaxImageFileBytes = 64 * kMiB / kLimitScale;  // image XML, a PNG file, the XML inside a PNG
+inline constexpr std::size_t kMaxSceneFileBytes = 4 * kMiB / kLimitScale;  // a volume scene (.vscene.xml)
+inline constexpr std::size_t kMaxCsvFileBytes = 64 * kMiB / kLimitScale;   // a gesture or probe-path CSV
+inline constexpr std::size_t kMaxNrrdHeaderBytes = 1 * kMiB / kLimitScale;  // the text header of a NRRD volume
 inline constexpr std::size_t kMaxVolumeFileBytes = 1024 * kMiB;  // a whole NRRD file (header and data)
 
 // --- XML structure (images and volume scenes; checked before tinyxml2 builds its tree) --------------
-inline constexpr std::size_t kMaxXmlElements = 1'000'000;  // elements, comments and other markup per file
+inline constexpr std::size_t kMaxXmlElements = 1'000'000 / kLimitScale;  // elements, comments and other markup per file
 inline constexpr std::size_t kMaxAttributesPerElement = 64;
 inline constexpr int kMaxXmlNestingDepth = 64;             // elements inside elements, the root is depth 1
-inline constexpr std::size_t kMaxPolygonPoints = 100'000;  // points of one polygon surface
+inline constexpr std::size_t kMaxPolygonPoints = 100'000 / kLimitScale;  // points of one polygon surface
 
 // --- PNG -------------------------------------------------------------------------------------------
 inline constexpr double kMaxPngPixels = 25'000'000.0;         // PNG export: width_px * height_px at most
@@ -33,18 +41,18 @@ inline constexpr double kMaxDecodedPngPixels = 100'000'000.0;  // PNG import: pi
 inline constexpr int kMaxPngSide = 200'000;                   // PNG import: width and height at most
 
 // --- Volumes (NRRD) --------------------------------------------------------------------------------
-inline constexpr std::size_t kMaxVolumeSamples = std::size_t{1} << 27;  // voxels x components (512 MiB as float)
-inline constexpr std::size_t kMaxVolumeDataBytes = 512 * kMiB;  // declared data: samples x type size (raw or inflated)
+inline constexpr std::size_t kMaxVolumeSamples = (std::size_t{1} << 27) / kLimitScale;  // voxels x components (512 MiB as float)
+inline constexpr std::size_t kMaxVolumeDataBytes = 512 * kMiB / kLimitScale;  // declared data: samples x type size (raw or inflated)
 inline constexpr double kMaxDeviceRateHz = 4000.0;              // a scene's device rate, Hz
 
 // --- Gestures (player/gesture.cpp enforces these) ----------------------------------------------------
-inline constexpr std::size_t kMaxGestureRows = 1'000'000;
+inline constexpr std::size_t kMaxGestureRows = 1'000'000 / kLimitScale;
 inline constexpr double kMaxGestureDurationS = 600.0;   // last time minus first time
 inline constexpr double kMaxGestureTimeS = 86'400.0;    // |time_s| at most
 inline constexpr double kMaxGestureCoordinateMm = kMaxCanvasMm;  // |x_mm|, |y_mm| at most
 
 // --- Probe paths (storage/volume/probe_path_io.cpp) ------------------------------------------------
-inline constexpr std::size_t kMaxProbePathRows = 1'000'000;
+inline constexpr std::size_t kMaxProbePathRows = 1'000'000 / kLimitScale;
 inline constexpr double kMaxProbePathDurationS = 600.0;   // last time minus first time
 inline constexpr double kMaxProbeTimeS = 86'400.0;        // |time_s| at most
 inline constexpr double kMaxProbeCoordinateMm = 10'000.0;  // |x_mm|, |y_mm|, |z_mm| at most
