@@ -53,8 +53,8 @@ void append_hex(std::string& out, unsigned char b) {
   out += kHex[b & 15];
 }
 
-// Escapes `text` into at most `max_bytes`, then "..." when input is left over.
-std::string escape(std::string_view text, std::size_t max_bytes, bool double_backslashes) {
+// Escapes `text` into at most `max_bytes`, then "..." when input is left over (and `cut` is set).
+std::string escape(std::string_view text, std::size_t max_bytes, bool double_backslashes, bool* cut = nullptr) {
   std::string out;
   out.reserve(std::min(text.size(), max_bytes) + 3);
   std::string piece;
@@ -86,6 +86,7 @@ std::string escape(std::string_view text, std::size_t max_bytes, bool double_bac
     out += piece;
     i += used;
   }
+  if (cut != nullptr) *cut = i < text.size();
   if (i < text.size()) out += "...";
   return out;
 }
@@ -101,6 +102,9 @@ std::string printable_message(std::string_view text) {
                        return b >= 0x20 && b < 0x7F;
                      });
   if (plain) return std::string(text);
+  bool cut = false;
+  std::string whole = escape(text, kMaxMessageBytes, false, &cut);
+  if (!cut) return whole;  // fits: so an escaped message passes through unchanged
   return escape(text, kMaxMessageBytes - 3, false);
 }
 
