@@ -1,13 +1,23 @@
 // Storage benchmarks (docs/benchmarks.md, "Storage"): loading and validating a 100 000-primitive
-// image against tinyxml2's bare parse of the same text, saving it, and PNG export at 10 px/mm.
+// image against tinyxml2's bare parse of the same text, saving it, and PNG export at 10 px/mm; and
+// the hostile inputs of docs/limits.md.
+//
+// Goals (Release build, the figures are read from these benchmarks, never checked in unit tests):
+//   BM_SavePng10PxPerMm                    <= 0.6 s  the picture of 100 000 primitives as PNG
+//   BM_ConvertPolygon100kPoints/circle     <= 2 s    XML text to PNG file, one 100 000-point polygon
+//   BM_ConvertPolygon100kPoints/zigzag     <= 2 s    the same, every edge spanning the canvas
+//   BM_ValidateElementWith200kAttributes   <= 2 s    2.3 MB, refused (limit 64 attributes)
+//   BM_ValidateDenseFileAtTheSizeLimit     <= 2 s    64 MiB of elements of 64 attributes each
 #include <benchmark/benchmark.h>
 #include <tinyxml2.h>
 
+#include <cmath>
 #include <filesystem>
 #include <random>
 #include <string>
 
 #include "storage/image_io.hpp"
+#include "storage/limits.hpp"
 #include "storage/picture.hpp"
 
 namespace {
@@ -133,6 +143,70 @@ void BM_SavePng10PxPerMm(benchmark::State& state) {
   std::filesystem::remove(path);
 }
 BENCHMARK(BM_SavePng10PxPerMm)->Unit(benchmark::kMillisecond);
+
+// One polygon of 100 000 points on a 300 x 300 mm canvas, as XML text: a circle (each row crosses
+// two edges) or a zigzag whose every edge spans the canvas (each row crosses all of them).
+std::string polygon_text(bool zigzag) {
+  vimg::Image image;
+  image.width_mm = 300;
+  image.height_mm = 300;
+  vimg::Surface s;
+  s.shape = vimg::SurfaceShape::polygon;
+  constexpr int kPoints = 100000;
+  for (int i = 0; i < kPoints; ++i) {
+    const double t = static_cast<double>(i) / kPoints;
+    if (zigzag) {
+      s.points.push_back({290.0 * t + 5.0, i % 2 == 0 ? 5.0 : 295.0});
+    } else {
+      s.points.push_back({150.0 + 140.0 * std::cos(2.0 * 3.141592653589793 * t), 150.0 + 140.0 * std::sin(2.0 * 3.141592653589793 * t)});
+    }
+  }
+  vimg::Element e;
+  e.id = "p";
+  e.body = s;
+  image.children.push_back(e);
+  return vimg::write_image_xml(image);
+}
+
+void BM_ConvertPolygon100kPoints(benchmark::State& state) {
+  const std::string xml = polygon_text(state.range(0) != 0);
+  const auto path = std::filesystem::temp_directory_path() / "vimg_storage_bench_polygon.png";
+  for (auto _ : state) {
+    const vimg::LoadResult loaded = vimg::parse_image_xml(xml, "polygon.vimg");
+    if (!loaded.ok()) state.SkipWithError("the polygon image did not load");
+    if (vimg::save_image_file(*loaded.image, path, {10.0})) state.SkipWithError("save failed");
+  }
+  std::filesystem::remove(path);
+}
+BENCHMARK(BM_ConvertPolygon100kPoints)->ArgName("zigzag")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void BM_ValidateElementWith200kAttributes(benchmark::State& state) {
+  std::string xml = "<vibroimage version=\"1.0\" width=\"10\" height=\"10\">\n<dot x=\"1\" y=\"1\"";
+  for (int i = 0; i < 200000; ++i) xml += " a" + std::to_string(i) + "=\"1\"";
+  xml += "/>\n</vibroimage>\n";
+  for (auto _ : state) {
+    const vimg::LoadResult result = vimg::parse_image_xml(xml, "attributes.vimg");
+    if (result.ok()) state.SkipWithError("200 000 attributes were accepted");
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * xml.size()));
+}
+BENCHMARK(BM_ValidateElementWith200kAttributes)->Unit(benchmark::kMillisecond);
+
+// The densest valid-looking file: 64 MiB of unknown elements with 64 attributes each.
+void BM_ValidateDenseFileAtTheSizeLimit(benchmark::State& state) {
+  std::string element = "<x";
+  for (int i = 0; i < 64; ++i) element += " a" + std::to_string(i) + "=\"\"";
+  element += "/>";
+  std::string xml = "<vibroimage version=\"1.0\" width=\"10\" height=\"10\">";
+  while (xml.size() + element.size() + 20 < vimg::kMaxImageFileBytes) xml += element;
+  xml += "</vibroimage>";
+  for (auto _ : state) {
+    const vimg::LoadResult result = vimg::parse_image_xml(xml, "dense.vimg");
+    benchmark::DoNotOptimize(result.diagnostics.size());
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * xml.size()));
+}
+BENCHMARK(BM_ValidateDenseFileAtTheSizeLimit)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
