@@ -44,6 +44,15 @@ struct RealtimeRenderer::Impl {
   std::vector<float> block;
   std::size_t fade_samples = 1;
   std::size_t fade_left = 0;
+  // Stopping: the output ramps to 0 over stop_ramp_samples before the thread ends.
+  bool stopping = false;
+  std::size_t stop_ramp_samples = 1;
+  std::size_t stop_ramp_done = 0;
+  // True while the loop should render another block: until stop() and then the ramp are done.
+  bool keep_going(const std::atomic<bool>& stop_requested) {
+    if (!stopping && stop_requested.load(std::memory_order_acquire)) stopping = true;
+    return !stopping || stop_ramp_done < stop_ramp_samples;
+  }
   StreamClock clock;
   std::int64_t window_start_ns = 0;
   std::uint64_t window_samples = 0;
@@ -159,7 +168,15 @@ void RealtimeRenderer::render_block(double block_start_s, double event_offset_s)
         m.fading_entry = nullptr;
       }
     }
-    m.block[i] = static_cast<float>(soft_limit(d));
+    double y = soft_limit(d);
+    if (m.stopping) {
+      // (R-1)/R, ..., 1/R, 0: the last sample of the ramp, and all after it, are exactly 0.
+      const double gain = 1.0 - static_cast<double>(std::min(m.stop_ramp_done + 1, m.stop_ramp_samples)) /
+                                    static_cast<double>(m.stop_ramp_samples);
+      y *= std::max(0.0, gain);
+      ++m.stop_ramp_done;
+    }
+    m.block[i] = static_cast<float>(y);
   }
   active_contacts_.store(m.current->active_contacts() + m.fading->active_contacts(), std::memory_order_relaxed);
 }
@@ -188,6 +205,10 @@ void RealtimeRenderer::run() {
   priority_granted_.store(priority.granted, std::memory_order_release);
   impl_->window_start_ns = monotonic_ns();
   impl_->window_samples = 0;
+  impl_->stopping = false;
+  impl_->stop_ramp_done = 0;
+  impl_->stop_ramp_samples = std::max<std::size_t>(
+      1, static_cast<std::size_t>(std::lround(std::max(0.0, options_.stop_ramp_s) * options_.sample_rate_hz)));
   if (paced_.load(std::memory_order_relaxed)) {
     run_paced_by_sink();
   } else {
@@ -206,7 +227,7 @@ void RealtimeRenderer::run_on_deadlines() {
     return start_ns + static_cast<std::int64_t>(std::llround(static_cast<double>(k) * block_ns));
   };
   std::uint64_t k = 0;
-  while (!stop_requested_.load(std::memory_order_acquire)) {
+  while (impl_->keep_going(stop_requested_)) {
     const std::int64_t deadline_ns = deadline_of(k);
     sleep_until_ns(deadline_ns);
     const std::int64_t woke_ns = monotonic_ns();
@@ -233,7 +254,7 @@ void RealtimeRenderer::run_paced_by_sink() {
   StreamClock& clock = impl_->clock;
   clock.start(monotonic_s());
   std::uint64_t sample = 0;
-  while (!stop_requested_.load(std::memory_order_acquire)) {
+  while (impl_->keep_going(stop_requested_)) {
     const std::int64_t woke_ns = monotonic_ns();
     clock.observe(sample, static_cast<double>(woke_ns) * 1e-9);
     stream_offset_s_.store(clock.offset_s(), std::memory_order_relaxed);

@@ -55,6 +55,8 @@ struct RealtimeOptions {
   // min_block_samples(); otherwise at most 1/50 s.
   std::size_t block_samples = 0;
   double crossfade_s = 0.02;
+  // stop() does not cut the drive: the last stop_ramp_s ramp it linearly to exactly 0 first.
+  double stop_ramp_s = 0.005;
   std::size_t max_contacts = 512;
   std::size_t event_queue_capacity = 1024;
   LiveTrackerOptions tracker;

@@ -147,15 +147,49 @@ TEST(RealtimeRenderer, SceneChangeCrossFadesWithoutAStep) {
   while (onset < d.size() && d[onset] == 0.0f) ++onset;
   ASSERT_LT(onset + 1, d.size());
   const double fade_samples = 0.02 * 8000.0;
+  const auto stop_ramp = static_cast<std::size_t>(o.stop_ramp_s * 8000.0);
+  ASSERT_GT(d.size(), onset + stop_ramp + 1);
+  const std::size_t ramp_start = d.size() - stop_ramp;  // stop() ramps the output out (tested below)
   double max_step = 0.0;
   bool saw_plateau = false;
-  for (std::size_t i = onset + 1; i < d.size(); ++i) {
+  for (std::size_t i = onset + 1; i < ramp_start; ++i) {
     max_step = std::max(max_step, static_cast<double>(std::fabs(d[i] - d[i - 1])));
     if (std::fabs(d[i] - 0.4f) < 1e-6f) saw_plateau = true;
   }
   EXPECT_TRUE(saw_plateau);
   EXPECT_LE(max_step, 0.3 / fade_samples * 1.01 + 1e-6);
-  EXPECT_NEAR(d.back(), 0.1f, 1e-6f);
+  EXPECT_NEAR(d[ramp_start - 1], 0.1f, 1e-6f);
+}
+
+// Stopping while a finger plays does not cut the drive with a step: the last stop_ramp_s ramp it
+// linearly to exactly 0, whatever the block size.
+TEST(RealtimeRenderer, StopRampsTheOutputToZeroInsteadOfCuttingIt) {
+  for (const std::size_t block : {std::size_t{8}, std::size_t{64}}) {
+    MemorySink sink(8000 * 10);
+    RealtimeOptions o;
+    o.sample_rate_hz = 8000.0;
+    o.block_samples = block;
+    RealtimeRenderer r(sink, o);
+    r.set_scene(constant_scene(0.5));
+    ASSERT_FALSE(r.start());
+    std::this_thread::sleep_for(30ms);
+    ASSERT_TRUE(r.push_event(touch(TouchPhase::down, 10.0)));
+    std::this_thread::sleep_for(150ms);
+    r.stop();
+    const auto& d = sink.samples();
+    const auto ramp = static_cast<std::size_t>(std::lround(o.stop_ramp_s * 8000.0));  // 40 samples
+    std::size_t last_full = d.size();
+    while (last_full > 0 && std::fabs(d[last_full - 1] - 0.5f) > 1e-6f) --last_full;
+    ASSERT_GT(last_full, 0u) << "block " << block << ": the finger never played";
+    // From the last full-level sample: 0.5 (R-1)/R, ..., 0.5/R, 0 (then zeros to the block's end).
+    ASSERT_GE(d.size() - last_full, ramp) << block;
+    for (std::size_t j = 0; j < ramp; ++j) {
+      const double expected = 0.5 * (1.0 - static_cast<double>(j + 1) / static_cast<double>(ramp));
+      ASSERT_NEAR(d[last_full + j], expected, 1e-6) << "block " << block << ", ramp sample " << j;
+    }
+    for (std::size_t i = last_full + ramp; i < d.size(); ++i) ASSERT_EQ(d[i], 0.0f) << block;
+    EXPECT_EQ(d.back(), 0.0f);
+  }
 }
 
 TEST(RealtimeRenderer, EventsAndScenesFromOtherThreadsWhilePlaying) {
@@ -227,8 +261,10 @@ void play_edits(double edits_per_s) {
   r.stop();
   EXPECT_EQ(last, 1u + kEdits);
   EXPECT_EQ(s.scene_generation, last) << "the renderer took the last scene";
-  ASSERT_FALSE(sink.samples().empty());
-  EXPECT_FLOAT_EQ(sink.samples().back(), static_cast<float>(drive_of(kEdits - 1)));
+  // What played last, before stop() ramped it out (at most one ramp and one block from the end).
+  const auto tail = static_cast<std::size_t>(std::lround(o.stop_ramp_s * 8000.0)) + r.block_samples();
+  ASSERT_GT(sink.samples().size(), tail);
+  EXPECT_FLOAT_EQ(sink.samples()[sink.samples().size() - 1 - tail], static_cast<float>(drive_of(kEdits - 1)));
 }
 
 TEST(RealtimeRenderer, TheLastOfABurstOfEditsAlwaysArrives) { play_edits(0.0); }
