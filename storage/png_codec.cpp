@@ -300,13 +300,19 @@ bool looks_like_png(std::string_view bytes) {
   return bytes.size() >= 8 && png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) == 0;
 }
 
-EncodedPng encode_png(const RgbRaster& raster, std::uint32_t pixels_per_metre, std::string_view xml) {
+EncodedPng encode_png(const RgbRaster& raster, std::uint32_t pixels_per_metre, const std::string& xml) {
   EncodedPng result;
-  std::string text(xml);  // NUL-terminated for libpng
   WriteTarget target;
   target.out = &result.bytes;
+  // Room for a typical result (flat pictures pack about 5:1, XML about 8:1), so that appending
+  // rarely copies what is already written.
+  try {
+    result.bytes.reserve(raster.rgb.size() / 4 + xml.size() / 6 + 4096);
+  } catch (const std::bad_alloc&) {
+  }
   ErrorSink sink;
-  if (!encode_into(raster, pixels_per_metre, text.data(), &target, &sink)) {
+  // libpng reads the text through a non-const pointer but never writes it.
+  if (!encode_into(raster, pixels_per_metre, const_cast<char*>(xml.c_str()), &target, &sink)) {
     result.bytes.clear();
     result.error = std::string("cannot encode PNG: ") + sink.message;
   }

@@ -24,7 +24,7 @@ struct EncodedPng {
 
 // Encodes an RGB picture with a pHYs chunk of `pixels_per_metre` and an iTXt chunk `vibroimage`
 // holding `xml` (compressed).
-EncodedPng encode_png(const RgbRaster& raster, std::uint32_t pixels_per_metre, std::string_view xml);
+EncodedPng encode_png(const RgbRaster& raster, std::uint32_t pixels_per_metre, const std::string& xml);
 
 struct PngText {
   std::optional<std::string> xml;  // the `vibroimage` text; empty when the PNG has none
