@@ -1,5 +1,7 @@
 #include "hal/output_spec.hpp"
 
+#include "storage/atomic_file.hpp"
+
 #include <charconv>
 #include <cstdio>
 #include <stdexcept>
@@ -180,7 +182,11 @@ class AudioOut final : public Output {
 
 class WavOut final : public Output {
  public:
-  explicit WavOut(const WavOutput& spec) : path_(spec.path), sink_(spec.path) {}
+  // A file that cannot be written is an error now, before anything plays (std::runtime_error).
+  explicit WavOut(const WavOutput& spec) : path_(spec.path), sink_(spec.path) {
+    AtomicFileWriter probe(path_);  // the same create as the sink's, abandoned at once
+    if (!probe.ok()) throw std::runtime_error(probe.error());
+  }
   DriveSink& sink() override { return sink_; }
   std::string description() const override { return "wav " + path_; }
   std::vector<std::string> take_messages() override {

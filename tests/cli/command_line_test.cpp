@@ -95,6 +95,16 @@ TEST(ProgramConventions, ProbeRefusesEndlessFramesAndNonFiniteMoves) {
   EXPECT_EQ(run_program(probe, "scene.xml --device sim --frames 2 --move 1,1").exit_code, 2);
 }
 
+TEST(ProgramConventions, PlayerExitsOneAtOnceWhenItsWavOutputCannotBeWritten) {
+  const std::string player = "apps/vimg-player/vimg-player";
+  if (!std::filesystem::exists(std::string(VIMG_BINARY_DIR "/") + player)) GTEST_SKIP() << "no GUI in this build";
+  const CommandRun r = test::run_command("SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy timeout 20 '" VIMG_BINARY_DIR "/" + player +
+                                         "' '" VIMG_SOURCE_DIR "/assets/examples/smiley.vimg' --window 400x300 "
+                                         "--output wav:/nonexistent-folder/out.wav");
+  EXPECT_EQ(r.exit_code, 1) << r.out;  // not 124 (still running at the timeout), not 0
+  EXPECT_NE(r.out.find("/nonexistent-folder/out.wav: cannot create a temporary file next to it"), std::string::npos) << r.out;
+}
+
 TEST(ProgramConventions, EditorRefusesBadNumbers) {
   const std::string editor = "editor/vimg-editor";
   if (!std::filesystem::exists(std::string(VIMG_BINARY_DIR "/") + editor)) GTEST_SKIP() << "no GUI in this build";
