@@ -32,8 +32,10 @@ int make_study(std::uint64_t seed, const std::string& out) {
   return kExitOk;
 }
 
-int probe(const std::string& scene_path, const std::string& path_file, const std::string& out) {
-  VolumeSceneLoadResult loaded = load_volume_scene_file(scene_path);
+int probe(const std::string& scene_path, const std::string& path_file, const std::string& out, bool allow_outside_files) {
+  VolumeSceneLoadOptions load_options;
+  load_options.allow_files_outside_scene_folder = allow_outside_files;
+  VolumeSceneLoadResult loaded = load_volume_scene_file(scene_path, load_options);
   print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) return kExitFailure;
   FileReadResult text = read_regular_file(path_file, kMaxCsvFileBytes);
@@ -73,12 +75,14 @@ void add_volume_command(CLI::App& vimg, int& exit_code) {
   CLI::App* probe_cmd = volume->add_subcommand("probe", "render the forces along a probe path (CSV time_s,x_mm,y_mm,z_mm)");
   struct ProbeArgs {
     std::string scene, path, out;
+    bool allow_outside_files = false;
   };
   auto p = std::make_shared<ProbeArgs>();
   probe_cmd->add_option("SCENE", p->scene, "a volume scene (.vscene.xml)")->required();
   probe_cmd->add_option("--path", p->path, "the probe path CSV")->required();
   probe_cmd->add_option("--out", p->out, "the force CSV to write (atomically)")->required();
-  probe_cmd->callback([p, &exit_code] { exit_code = probe(p->scene, p->path, p->out); });
+  probe_cmd->add_flag("--allow-outside-files", p->allow_outside_files, "let the scene name data files outside its own folder (an absolute path, ..); off by default");
+  probe_cmd->callback([p, &exit_code] { exit_code = probe(p->scene, p->path, p->out, p->allow_outside_files); });
 }
 
 }  // namespace vimg::cli

@@ -1,6 +1,7 @@
 #include "hal/actuator_profile.hpp"
 
 #include "storage/read_file.hpp"
+#include "storage/xml_limits.hpp"
 
 #include <tinyxml2.h>
 
@@ -61,6 +62,11 @@ class ProfileParser {
   }
 
   ProfileLoadResult parse(std::string_view xml) {
+    // Structure limits first: tinyxml2 is quadratic in attributes (storage/xml_limits.hpp).
+    if (const auto over = check_xml_limits(xml)) {
+      error(over->line, over->message);
+      return finish(std::nullopt);
+    }
     tinyxml2::XMLDocument document;
     if (document.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
       error(document.ErrorLineNum(), std::string("XML: ") + document.ErrorStr());

@@ -14,6 +14,7 @@ ForceArgsResult parse_force_args(int argc, const char* const* argv) {
       "overrun watchdogs) until Ctrl-C, SIGTERM or --seconds.");
   cmdline::configure(app, "vimg-force");
   app.add_option("SCENE", a.scene_path, "a volume scene (.vscene.xml)")->required();
+  app.add_flag("--allow-outside-files", a.allow_outside_files, "let the scene name data files outside its own folder (an absolute path, ..); off by default");
   app.add_option("--device", a.device,
                  "sim: the simulated device; hid: the first HID device that answers the force protocol; "
                  "hid:PATH: that hidraw device (e.g. hid:/dev/hidraw3)")

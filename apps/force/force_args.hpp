@@ -8,6 +8,7 @@ namespace vimg::force_app {
 
 struct ForceArgs {
   std::string scene_path;
+  bool allow_outside_files = false;  // --allow-outside-files: data files may leave the scene's folder
   std::string device;      // "sim", "hid" or "hid:PATH"
   std::string hid_path;    // PATH of "hid:PATH" ("" for "hid": search)
   std::string path_file;   // sim only: the hand follows this probe path (time_s,x_mm,y_mm,z_mm)

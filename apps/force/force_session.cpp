@@ -41,7 +41,9 @@ int interrupted(int signal) { return signal == SIGTERM ? cmdline::kExitSigterm :
 }  // namespace
 
 int run_force_session(const ForceArgs& args, const std::atomic<int>& signal_received) {
-  VolumeSceneLoadResult loaded = load_volume_scene_file(args.scene_path);
+  VolumeSceneLoadOptions load_options;
+  load_options.allow_files_outside_scene_folder = args.allow_outside_files;
+  VolumeSceneLoadResult loaded = load_volume_scene_file(args.scene_path, load_options);
   print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) return cmdline::kExitFailure;
   const DeviceProfile profile = loaded.loaded->scene.device;

@@ -90,7 +90,9 @@ int main(int argc, char** argv) {
   const bool scripted_move = args.move_mm.has_value();
   const double move_x = scripted_move ? args.move_mm->first : 0.0;
   const double move_z = scripted_move ? args.move_mm->second : 0.0;
-  vimg::VolumeSceneLoadResult loaded = vimg::load_volume_scene_file(scene_path);
+  vimg::VolumeSceneLoadOptions load_options;
+  load_options.allow_files_outside_scene_folder = args.allow_outside_files;
+  vimg::VolumeSceneLoadResult loaded = vimg::load_volume_scene_file(scene_path, load_options);
   for (const auto& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
   if (!loaded.ok()) return 1;
   const vimg::VolumeScene& scene = loaded.loaded->scene;

@@ -14,6 +14,7 @@ ProbeArgsResult parse_probe_args(int argc, const char* const* argv) {
       "loop runs on the force device and the window shows the probe and the force it sends, live.");
   cmdline::configure(app, "vimg-probe");
   app.add_option("SCENE", a.scene_path, "a volume scene (.vscene.xml)")->required();
+  app.add_flag("--allow-outside-files", a.allow_outside_files, "let the scene name data files outside its own folder (an absolute path, ..); off by default");
   app.add_option("--device", a.device, "run the haptic loop on a force device: sim, hid or hid:/dev/hidrawN")
       ->check(CLI::Validator(
           [](std::string& v) -> std::string {

@@ -8,6 +8,7 @@ namespace vimg::probe {
 
 struct ProbeArgs {
   std::string scene_path;
+  bool allow_outside_files = false;  // --allow-outside-files
   // Mouse mode (no --device): the mouse moves the probe in the slice.
   // Device mode: the scene's haptic loop runs on a force device and the window shows it live.
   std::string device;     // "", "sim", "hid" or "hid:PATH"

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -78,7 +79,10 @@ TEST_F(RenderCommand, AnInterruptedRenderLeavesNothingAndSaysWhichSignal) {
   for (const auto& [signal_name, expected] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
     const std::string cmd = "cd '" + dir_.string() + "' && ('" VIMG_BINARY_DIR "/cli/vimg' render '" VIMG_SOURCE_DIR
                             "/assets/examples/smiley.vimg' --gesture '" + gesture +
-                            "' --out long.wav --rate 48000 & pid=$!; sleep 0.5; kill -" + signal_name +
+                            "' --out long.wav --rate 48000 & pid=$!; "
+                            // Signal once it renders (its temporary exists): a background job of a
+                            // script starts with SIGINT ignored until vimg installs its handler.
+                            "for i in $(seq 400); do ls .long.wav.tmp-* >/dev/null 2>&1 && break; sleep 0.05; done; kill -" + signal_name +
                             " $pid; wait $pid; echo \"exit=$?\")";
     const test::CommandRun r = test::run_command(cmd);
     EXPECT_NE(r.out.find("exit=" + std::to_string(expected)), std::string::npos) << signal_name << "\n" << r.out;
@@ -89,6 +93,34 @@ TEST_F(RenderCommand, AnInterruptedRenderLeavesNothingAndSaysWhichSignal) {
     }
     EXPECT_TRUE(left.empty()) << signal_name << ": left " << (left.empty() ? "" : left.front());
   }
+}
+
+// A scene's data file outside the scene's folder is refused unless the user asks for it explicitly.
+TEST_F(RenderCommand, VolumeDataOutsideTheSceneFolderNeedsTheExplicitFlag) {
+  const std::string vimg = "'" VIMG_BINARY_DIR "/cli/vimg'";
+  const std::string in_dir = "cd '" + dir_.string() + "' && ";
+  ASSERT_EQ(test::run_command(in_dir + vimg + " volume make-study --seed 3 --out s").exit_code, 0);
+  fs::create_directories(dir_ / "elsewhere");
+  fs::rename(dir_ / "s" / "feature.nrrd", dir_ / "elsewhere" / "feature.nrrd");
+  std::string scene;
+  {
+    std::ifstream in(dir_ / "s" / "study.vscene.xml");
+    scene.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto at = scene.find("file=\"feature.nrrd\"");
+  ASSERT_NE(at, std::string::npos);
+  scene.replace(at, std::string("file=\"feature.nrrd\"").size(), "file=\"../elsewhere/feature.nrrd\"");
+  std::ofstream(dir_ / "s" / "study.vscene.xml") << scene;
+  write_gesture("");  // not used; keeps the folder layout of the other tests
+  std::ofstream(dir_ / "p.csv") << "time_s,x_mm,y_mm,z_mm\n0,-20,0,0\n0.5,20,0,0\n";
+  const std::string probe = in_dir + vimg + " volume probe s/study.vscene.xml --path p.csv --out f.csv";
+  const test::CommandRun refused = test::run_command(probe);
+  EXPECT_EQ(refused.exit_code, 1) << refused.out;
+  EXPECT_NE(refused.out.find("study.vscene.xml:3: error:"), std::string::npos) << refused.out;
+  EXPECT_FALSE(fs::exists(dir_ / "f.csv"));
+  const test::CommandRun allowed = test::run_command(probe + " --allow-outside-files");
+  EXPECT_EQ(allowed.exit_code, 0) << allowed.out;
+  EXPECT_TRUE(fs::exists(dir_ / "f.csv"));
 }
 
 }  // namespace

@@ -60,5 +60,16 @@ TEST(ActuatorProfileFile, ADeviceIsRefusedWithoutReadingIt) {
   EXPECT_EQ(r.errors.front(), "/dev/zero: error: is not a regular file (a character device)");
 }
 
+TEST(ActuatorProfileFile, AnElementWithThousandsOfAttributesIsRefusedBeforeParsing) {
+  std::string xml = "<actuator";
+  for (int i = 0; i < 5000; ++i) xml += " a" + std::to_string(i) + "=\"1\"";
+  xml += "/>";
+  const ProfileLoadResult r = parse_actuator_profile(xml, "p.xml");
+  ASSERT_FALSE(r.profile);
+  ASSERT_FALSE(r.errors.empty());
+  EXPECT_NE(r.errors.front().find("p.xml:1: error: "), std::string::npos) << r.errors.front();
+  EXPECT_NE(r.errors.front().find("(limit 64)"), std::string::npos) << r.errors.front();
+}
+
 }  // namespace
 }  // namespace vimg
