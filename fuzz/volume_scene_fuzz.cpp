@@ -6,24 +6,11 @@
 #include <string_view>
 #include <vector>
 
+#include "fuzz/check_messages.hpp"
 #include "storage/limits.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
-namespace {
-
-// Every message is printable (no control character reaches a terminal) and bounded, at most
-// kMaxDiagnosticsPerFile of them plus the line counting the rest.
-void check_messages(const std::vector<vimg::Diagnostic>& diagnostics) {
-  if (diagnostics.size() > vimg::kMaxDiagnosticsPerFile + 1) std::abort();
-  for (const auto& d : diagnostics) {
-    if (d.message.size() > vimg::kMaxMessageBytes) std::abort();
-    for (const char c : d.to_string()) {
-      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) std::abort();
-    }
-  }
-}
-
-}  // namespace
+using vimg::fuzz::check_messages;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
