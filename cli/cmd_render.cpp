@@ -131,6 +131,10 @@ void add_render_command(CLI::App& vimg, int& exit_code) {
   sub->add_option("--rate", a->rate_hz, "output sample rate in Hz")->check(CLI::Range(1, 48000));
   sub->add_option("--actuator", a->actuator, "actuator profile (assets/profiles/*.xml); default: ideal, 175 Hz carrier");
   sub->add_option("--register-trace", a->register_trace, "DRV2605L register traffic as CSV (needs a drv2605l --actuator)");
+  sub->footer("Limits (docs/limits.md): a gesture of at most " + std::to_string(kMaxGestureRows) + " rows, " +
+              std::to_string(static_cast<int>(kMaxGestureDurationS)) + " s from time 0 and " +
+              std::to_string(kMaxCsvFileBytes >> 20) + " MiB; an image of at most " + std::to_string(kMaxImageFileBytes >> 20) +
+              " MiB. SIGINT/SIGTERM abandon the output and exit 130/143.");
   sub->callback([a, &exit_code] { exit_code = run_render(*a); });
 }
 

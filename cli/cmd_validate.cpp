@@ -6,6 +6,7 @@
 
 #include "cli/command.hpp"
 #include "storage/image_io.hpp"
+#include "storage/limits.hpp"
 
 namespace vimg::cli {
 
@@ -32,6 +33,10 @@ void add_validate_command(CLI::App& vimg, int& exit_code) {
   CLI::App* sub = vimg.add_subcommand("validate", "check .vimg and .png images; exit 1 if any is invalid");
   auto files = std::make_shared<std::vector<std::string>>();
   sub->add_option("FILE", *files, "images to check")->required();
+  sub->footer("Limits (docs/limits.md): " + std::to_string(kMaxImageFileBytes >> 20) + " MiB per file, " +
+              std::to_string(kMaxAttributesPerElement) + " attributes per element, nesting " +
+              std::to_string(kMaxXmlNestingDepth) + " deep, " + std::to_string(kMaxPolygonPoints) +
+              " points per polygon; the first " + std::to_string(kMaxDiagnosticsPerFile) + " problems of a file are listed.");
   sub->callback([files, &exit_code] { exit_code = run_validate(*files); });
 }
 

@@ -82,6 +82,9 @@ void add_volume_command(CLI::App& vimg, int& exit_code) {
   probe_cmd->add_option("--path", p->path, "the probe path CSV")->required();
   probe_cmd->add_option("--out", p->out, "the force CSV to write (atomically)")->required();
   probe_cmd->add_flag("--allow-outside-files", p->allow_outside_files, "let the scene name data files outside its own folder (an absolute path, ..); off by default");
+  probe_cmd->footer("Limits (docs/limits.md): a path of at most " + std::to_string(kMaxProbePathRows) + " rows and " +
+                    std::to_string(static_cast<int>(kMaxProbePathDurationS)) + " s, coordinates within " +
+                    std::to_string(static_cast<int>(kMaxProbeCoordinateMm)) + " mm; data files in the scene's folder (see --allow-outside-files).");
   probe_cmd->callback([p, &exit_code] { exit_code = probe(p->scene, p->path, p->out, p->allow_outside_files); });
 }
 

@@ -28,6 +28,9 @@ TEST(VimgConventions, HelpAndVersionExitZeroForEveryCommand) {
     EXPECT_EQ(help.exit_code, 0) << command << "\n" << help.out;
     EXPECT_NE(help.out.find("Usage:"), std::string::npos) << command << "\n" << help.out;
   }
+  for (const char* command : {"render", "validate", "volume probe"}) {
+    EXPECT_NE(vimg(std::string(command) + " --help").out.find("Limits (docs/limits.md): "), std::string::npos) << command;
+  }
   const CommandRun version = vimg("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_EQ(version.out, std::string("vimg ") + cmdline::version() + "\n");
