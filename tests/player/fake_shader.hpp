@@ -1,4 +1,8 @@
 #pragma once
+#include <memory>
+#include <vector>
+
+#include "player/scene.hpp"
 // A test double for ForceShader: a box that outputs a constant drive while the finger's current
 // position is inside, then rings for `ring_steps` steps after it leaves. Counts begin_contact calls.
 #include <atomic>
@@ -44,5 +48,13 @@ class FakeShader final : public ForceShader {
   double drive_;
   int ring_steps_;
 };
+
+// A scene of one FakeShader over the square (0, 0)-(1, 1) m that drives `drive` while touched.
+inline std::shared_ptr<const Scene> constant_scene(double drive) {
+  std::vector<ScenePrimitive> prims;
+  const Bounds2M box{0.0, 0.0, 1.0, 1.0};
+  prims.push_back({std::make_unique<FakeShader>(box, drive), box, "all"});
+  return std::make_shared<const Scene>(std::move(prims), Vec3{0, 0, 1}, 1.0);
+}
 
 }  // namespace vimg::test

@@ -15,12 +15,7 @@ namespace {
 
 using namespace std::chrono_literals;
 
-std::shared_ptr<const Scene> constant_scene(double drive) {
-  std::vector<ScenePrimitive> prims;
-  const Bounds2M box{0.0, 0.0, 1.0, 1.0};
-  prims.push_back({std::make_unique<test::FakeShader>(box, drive), box, "all"});
-  return std::make_shared<const Scene>(std::move(prims), Vec3{0, 0, 1}, 1.0);
-}
+using test::constant_scene;
 
 TouchEvent touch(TouchPhase phase, double x_mm, int finger = 0) {
   TouchEvent e;

@@ -73,21 +73,11 @@ TEST(NrrdLimits, AFifoIsRefusedWithoutBlocking) {
   test::TempDir dir("nrrd_fifo");
   const auto fifo = dir / "v.nrrd";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  // A writer that gives up after two seconds, so that a reader blocking in open() is released.
-  std::atomic<bool> done{false};
-  std::thread writer([&] {
-    for (int i = 0; i < 200 && !done; ++i) {
-      const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
-      if (fd >= 0) {
-        ::close(fd);
-        return;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-  });
-  const NrrdLoadResult r = load_nrrd_file(fifo);
-  done = true;
-  writer.join();
+  NrrdLoadResult r;
+  {
+    const test::FifoReleaser release(fifo);
+    r = load_nrrd_file(fifo);
+  }
   EXPECT_EQ(first_message(r), fifo.string() + ": error: is not a regular file (a FIFO)");
 }
 

@@ -1,6 +1,11 @@
 #pragma once
 // Helpers for the storage tests: files, temporary directories and seeded random images.
+#include <fcntl.h>
 #include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
 
 #include <filesystem>
 #include <fstream>
@@ -25,6 +30,34 @@ inline void write_text_file(const std::filesystem::path& path, const std::string
 }
 
 // A fresh directory under the system temp dir, removed with everything in it at scope exit.
+// While it lives, a thread keeps opening `fifo` for writing (for up to two seconds), so that a
+// reader wrongly blocking in open() is released and the test fails instead of hanging.
+class FifoReleaser {
+ public:
+  explicit FifoReleaser(std::filesystem::path fifo)
+      : fifo_(std::move(fifo)), writer_([this] {
+          for (int i = 0; i < 200 && !done_; ++i) {
+            const int fd = ::open(fifo_.c_str(), O_WRONLY | O_NONBLOCK);
+            if (fd >= 0) {
+              ::close(fd);
+              return;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+          }
+        }) {}
+  ~FifoReleaser() {
+    done_ = true;
+    writer_.join();
+  }
+  FifoReleaser(const FifoReleaser&) = delete;
+  FifoReleaser& operator=(const FifoReleaser&) = delete;
+
+ private:
+  std::filesystem::path fifo_;
+  std::atomic<bool> done_{false};
+  std::thread writer_;
+};
+
 class TempDir {
  public:
   explicit TempDir(const std::string& tag) {

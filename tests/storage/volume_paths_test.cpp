@@ -94,21 +94,11 @@ TEST(VolumePaths, AFifoIsRefusedWithoutBlocking) {
   const fs::path scene = scene_naming(dir, "pipe.nrrd");
   const fs::path fifo = dir / "scene" / "pipe.nrrd";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  // A writer that gives up after two seconds, so that a reader blocking in open() is released.
-  std::atomic<bool> done{false};
-  std::thread writer([&] {
-    for (int i = 0; i < 200 && !done; ++i) {
-      const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
-      if (fd >= 0) {
-        ::close(fd);
-        return;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-  });
-  const VolumeSceneLoadResult r = load_volume_scene_file(scene);
-  done = true;
-  writer.join();
+  VolumeSceneLoadResult r;
+  {
+    const test::FifoReleaser release(fifo);
+    r = load_volume_scene_file(scene);
+  }
   expect_refused(r, scene, "pipe.nrrd", "is not a regular file (a FIFO)");
 }
 
