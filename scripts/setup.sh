@@ -7,6 +7,7 @@ packages=(
   cmake ninja-build g++ pkg-config git
   libsdl2-dev libtinyxml2-dev libpng-dev zlib1g-dev libhidapi-dev libgpiod-dev libimgui-dev
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
+  libteem-dev libcairo2-dev libsdl2-ttf-dev fonts-dejavu-core
   clang libclang-rt-14-dev
   xvfb xdotool imagemagick xauth python3
   locales
