@@ -155,7 +155,7 @@ void WavSink::finish(AtomicFileWriter& file) {
   file.write_at(kDataSizeOffset, field);
 }
 
-void CsvSink::write_header(std::string& out, double) { out += "time_s,drive\n"; }
+void CsvSink::write_header(std::string& out, double) { out += "time_s," + column_ + "\n"; }
 
 void CsvSink::write_samples(std::string& out, std::span<const float> drive, double block_start_time_s) {
   for (std::size_t i = 0; i < drive.size(); ++i) {

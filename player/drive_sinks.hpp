@@ -82,15 +82,20 @@ class WavSink final : public FileSink {
   void finish(AtomicFileWriter& file) override;
 };
 
-// `time_s,drive` rows, one per sample.
+// `time_s,drive` rows, one per sample; the second column is named `column` (e.g. "acceleration"
+// for `vimg render --signal acceleration`).
 class CsvSink final : public FileSink {
  public:
-  using FileSink::FileSink;
+  explicit CsvSink(std::filesystem::path target, std::string column = "drive")
+      : FileSink(std::move(target)), column_(std::move(column)) {}
 
  protected:
   void write_header(std::string& out, double sample_rate_hz) override;
   void write_samples(std::string& out, std::span<const float> drive, double block_start_time_s) override;
   void finish(AtomicFileWriter&) override {}
+
+ private:
+  std::string column_;
 };
 
 }  // namespace vimg
