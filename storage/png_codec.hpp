@@ -38,4 +38,15 @@ struct PngText {
 // vibroimage chunk are each reported as such.
 PngText read_png_text(std::string_view bytes);
 
+struct DecodedPng {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;  // width * height * 4 bytes, rows top to bottom
+  std::string error;               // empty on success
+};
+
+// Decodes the pixels of any PNG (every colour type, bit depth and interlacing) as 8-bit RGBA, with
+// the checks of read_png_text() and at most `max_pixels` pixels (picture import, docs/import.md).
+DecodedPng decode_png_rgba(std::string_view bytes, double max_pixels);
+
 }  // namespace vimg

@@ -1,0 +1,68 @@
+// import_file: the format from the extension, the bytes through the one bounded reader, and a last
+// check that the result reads back as a valid image (what `vimg validate` will say of it).
+#include "storage/import/import.hpp"
+
+#include <string>
+
+#include "storage/image_io.hpp"
+#include "storage/limits.hpp"
+#include "storage/png_codec.hpp"
+#include "storage/read_file.hpp"
+
+namespace vimg {
+
+namespace {
+
+ImportResult failure(const std::string& file, std::string message) {
+  ImportResult r;
+  r.diagnostics.push_back({Diagnostic::Severity::error, file, 0, std::move(message)});
+  return r;
+}
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return ext;
+}
+
+// The image as it will be written, read back: its warnings (e.g. a primitive wholly outside the
+// canvas) join the import's; an error would be a fault of the importer and is reported as such.
+void check_written(ImportResult& r, const std::string& file) {
+  if (!r.image) return;
+  const LoadResult back = parse_image_xml(write_image_xml(*r.image), file + " (imported)");
+  for (Diagnostic d : back.diagnostics) {
+    d.file = file;
+    d.line = 0;
+    r.diagnostics.push_back(std::move(d));
+  }
+  if (!back.ok()) r.image.reset();
+}
+
+}  // namespace
+
+ImportResult import_file(const std::filesystem::path& path, const ImportOptions& options) {
+  const std::string name = path.string();
+  const std::string ext = lower_extension(path);
+  if (ext != ".svg" && ext != ".png") return failure(name, "cannot import '" + ext + "' files (only .svg and .png)");
+  FileReadResult read = read_regular_file(path, kMaxImageFileBytes);
+  if (!read.bytes) return failure(name, read.error);
+  ImportResult result;
+  if (ext == ".svg") {
+    result = import_svg(*read.bytes, name, options);
+  } else {
+    if (!looks_like_png(*read.bytes)) return failure(name, "is not a PNG file (no PNG signature)");
+    const PngText text = read_png_text(*read.bytes);
+    if (text.xml) {  // already a vibroimage: opened as one
+      const LoadResult loaded = parse_image_xml(*text.xml, name);
+      result.image = loaded.image;
+      result.diagnostics = loaded.diagnostics;
+      result.opened_vibroimage = true;
+      return result;
+    }
+    result = import_picture(*read.bytes, name, options);
+  }
+  check_written(result, name);
+  return result;
+}
+
+}  // namespace vimg

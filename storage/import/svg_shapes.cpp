@@ -1,0 +1,196 @@
+#include "storage/import/svg_shapes.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "primitives/geometry/hit_test.hpp"
+#include "storage/import/rings.hpp"
+#include "storage/import/svg_flatten.hpp"
+
+namespace vimg::svg {
+
+namespace {
+
+std::string num(double v) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  return buffer;
+}
+
+std::vector<Subpath> parse_outline(const std::string& d) { return parse_path_data(d, 64).subpaths; }
+
+Element primitive(auto body) {
+  Element e;
+  e.body = std::move(body);
+  return e;
+}
+
+struct Converter {
+  const ShapeGeometry& g;
+  const ShapeSettings& s;
+  ShapeOutput out;
+  std::size_t points_used = 0;
+
+  double scale() const { return s.ctm.mean_scale(); }
+
+  double line_width_mm() const {
+    const double w = s.style.stroke_width * scale();
+    return w > 0.0 && std::isfinite(w) ? w : Line{}.width_mm;
+  }
+
+  bool flatten(const Subpath& sp, import::Ring& points) {
+    const std::size_t room = s.max_points > points_used ? s.max_points - points_used : 0;
+    if (!flatten_subpath(sp, s.ctm, s.tolerance_mm, room, points)) {
+      out.error = "the flattened outline has more than " + std::to_string(s.max_points) + " points (limit " +
+                  std::to_string(s.max_points) + ")";
+      return false;
+    }
+    points_used += points.size();
+    return true;
+  }
+
+  void chain(import::Ring points, bool closed) {
+    import::remove_repeats(points, closed);
+    if (closed && points.size() > 2) points.push_back(points.front());
+    const double width = line_width_mm();
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      Line l;
+      l.x1_mm = points[i - 1].x;
+      l.y1_mm = points[i - 1].y;
+      l.x2_mm = points[i].x;
+      l.y2_mm = points[i].y;
+      l.width_mm = width;
+      out.primitives.push_back(primitive(l));
+    }
+  }
+
+  bool try_dot() {
+    if (g.native != ShapeGeometry::Native::ellipse || g.rx != g.ry || !s.ctm.similarity()) return false;
+    const double r = g.rx * scale();
+    if (!(r > 0.0) || r > s.dot_max_radius_mm) return false;
+    const Vec2 c = s.ctm.apply({g.cx, g.cy});
+    out.primitives.push_back(primitive(Dot{c.x, c.y, r, 1.0}));
+    return true;
+  }
+
+  bool try_native_surface() {
+    Surface surface;
+    if (g.native == ShapeGeometry::Native::rect && s.ctm.axis_aligned()) {
+      const Vec2 a = s.ctm.apply({g.x, g.y}), b = s.ctm.apply({g.x + g.width, g.y + g.height});
+      surface.shape = SurfaceShape::rect;
+      surface.x_mm = std::min(a.x, b.x);
+      surface.y_mm = std::min(a.y, b.y);
+      surface.width_mm = std::fabs(b.x - a.x);
+      surface.height_mm = std::fabs(b.y - a.y);
+    } else if (g.native == ShapeGeometry::Native::ellipse &&
+               (s.ctm.axis_aligned() || (s.ctm.similarity() && g.rx == g.ry))) {
+      const Vec2 c = s.ctm.apply({g.cx, g.cy});
+      surface.shape = SurfaceShape::ellipse;
+      surface.cx_mm = c.x;
+      surface.cy_mm = c.y;
+      surface.rx_mm = s.ctm.axis_aligned() ? g.rx * std::fabs(s.ctm.a) : g.rx * scale();
+      surface.ry_mm = s.ctm.axis_aligned() ? g.ry * std::fabs(s.ctm.d) : g.ry * scale();
+    } else {
+      return false;
+    }
+    out.primitives.push_back(primitive(surface));
+    return true;
+  }
+
+  // Nonzero and even-odd differ where rings nest with the same direction.
+  void check_fill_rule(const std::vector<import::Ring>& rings) {
+    if (s.style.even_odd || rings.size() < 2) return;
+    for (std::size_t i = 0; i < rings.size(); ++i) {
+      for (std::size_t j = 0; j < rings.size(); ++j) {
+        if (i == j || !contains(Polygon{rings[j]}, rings[i].front())) continue;
+        if ((import::twice_signed_area(rings[i]) > 0) == (import::twice_signed_area(rings[j]) > 0)) {
+          out.warnings.push_back(
+              "fill-rule nonzero fills a nested outline drawn in the same direction; the surface uses the even-odd "
+              "rule, so it is a hole here");
+          return;
+        }
+      }
+    }
+  }
+
+  bool polygon_surface() {
+    std::vector<import::Ring> rings;
+    for (const Subpath& sp : g.subpaths) {
+      if (!sp.closed && !g.lines_only && g.native == ShapeGeometry::Native::none) continue;
+      import::Ring ring;
+      if (!flatten(sp, ring)) return false;
+      import::remove_repeats(ring, true);
+      if (ring.size() >= 3) rings.push_back(std::move(ring));
+    }
+    if (rings.empty()) return true;
+    check_fill_rule(rings);
+    import::Ring joined = import::bridge_rings(rings);
+    if (joined.size() > s.max_points) {
+      out.error = "a polygon of more than " + std::to_string(s.max_points) + " points (limit " +
+                  std::to_string(s.max_points) + ")";
+      return false;
+    }
+    Surface surface;
+    surface.shape = SurfaceShape::polygon;
+    surface.points.reserve(joined.size());
+    for (const Vec2& p : joined) surface.points.push_back({p.x, p.y});
+    out.primitives.push_back(primitive(std::move(surface)));
+    return true;
+  }
+
+  void run() {
+    const Style& st = s.style;
+    if (g.lines_only) {
+      for (const Subpath& sp : g.subpaths) {
+        import::Ring points;
+        if (!flatten(sp, points)) return;
+        chain(std::move(points), sp.closed);
+      }
+      return;
+    }
+    if (!st.fill && !st.stroke) {
+      out.warnings.push_back("has neither fill nor stroke (it draws nothing): not imported");
+      return;
+    }
+    if (try_dot()) return;
+    if (st.fill) {
+      if (!try_native_surface() && !polygon_surface()) return;
+    }
+    for (const Subpath& sp : g.subpaths) {
+      // Open subpaths are LINE chains whether filled or stroked; closed ones only when stroked.
+      if (!st.stroke && sp.closed) continue;
+      import::Ring points;
+      if (!flatten(sp, points)) return;
+      chain(std::move(points), sp.closed);
+    }
+  }
+};
+
+}  // namespace
+
+ShapeOutput convert_shape(const ShapeGeometry& geometry, const ShapeSettings& settings) {
+  Converter c{geometry, settings, {}, 0};
+  c.run();
+  return std::move(c.out);
+}
+
+std::vector<Subpath> rect_outline(double x, double y, double w, double h, double rx, double ry) {
+  if (rx <= 0.0 || ry <= 0.0) {
+    return parse_outline("M" + num(x) + "," + num(y) + " H" + num(x + w) + " V" + num(y + h) + " H" + num(x) + " Z");
+  }
+  const std::string arc = "A" + num(rx) + "," + num(ry) + " 0 0 1 ";
+  return parse_outline("M" + num(x + rx) + "," + num(y) + " H" + num(x + w - rx) + " " + arc + num(x + w) + "," +
+                       num(y + ry) + " V" + num(y + h - ry) + " " + arc + num(x + w - rx) + "," + num(y + h) + " H" +
+                       num(x + rx) + " " + arc + num(x) + "," + num(y + h - ry) + " V" + num(y + ry) + " " + arc +
+                       num(x + rx) + "," + num(y) + " Z");
+}
+
+std::vector<Subpath> ellipse_outline(double cx, double cy, double rx, double ry) {
+  const std::string arc = "A" + num(rx) + "," + num(ry) + " 0 0 1 ";
+  return parse_outline("M" + num(cx + rx) + "," + num(cy) + " " + arc + num(cx) + "," + num(cy + ry) + " " + arc +
+                       num(cx - rx) + "," + num(cy) + " " + arc + num(cx) + "," + num(cy - ry) + " " + arc +
+                       num(cx + rx) + "," + num(cy) + " Z");
+}
+
+}  // namespace vimg::svg
