@@ -1,6 +1,7 @@
 #pragma once
 // Reading and writing vibrotactile images (spec sections 1 and 2): XML `.vimg` and PNG with the
 // XML embedded. This header is the contract the editor, the player and `vimg` use.
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -9,12 +10,31 @@
 
 #include "primitives/image.hpp"
 #include "storage/diagnostic.hpp"
+#include "storage/parameter_table.hpp"
 
 namespace vimg {
+
+// A number outside its range (an error, spec section 1), kept as read in LoadResult::readable so
+// that an editor can show it and clamp it (storage/parameter_table.hpp has the range).
+struct ValueProblem {
+  int line = 0;                        // of the attribute
+  std::vector<std::size_t> path;       // the element: indices into children, through groups; empty for
+                                       // the canvas and <interaction>
+  const ParameterSpec* parameter = nullptr;
+  double value = 0.0;                  // as read
+};
 
 struct LoadResult {
   std::optional<Image> image;            // set only when there is no error: never half-loaded
   std::vector<Diagnostic> diagnostics;   // errors and warnings, in file order
+  // Set instead of `image` when there are errors but the document could be read: well-formed XML
+  // with a <vibroimage> root of a readable version and size. It holds every element that could be
+  // read: numbers out of range as read (each in value_problems), invalid ids left empty, duplicate
+  // ids as they are. An element with any other error (a missing or unreadable attribute, an unknown
+  // shape, too few points, groups nested too deep) is left out. For editors; tools that need a valid
+  // image use `image`.
+  std::optional<Image> readable;
+  std::vector<ValueProblem> value_problems;  // all of them, in file order (diagnostics are capped)
   bool ok() const { return image.has_value(); }
 };
 

@@ -16,6 +16,7 @@
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
+#include "storage/parameter_table.hpp"
 #include "storage/xml_limits.hpp"
 
 namespace vimg {
@@ -25,40 +26,6 @@ namespace {
 using tinyxml2::XMLAttribute;
 using tinyxml2::XMLElement;
 using tinyxml2::XMLNode;
-
-// The allowed range of a number attribute.
-enum class Range {
-  any,            // any finite value
-  positive,       // > 0
-  canvas_size,    // (0, kMaxCanvasMm]
-  unit_closed,    // [0, 1]
-  unit_open,      // (0, 1)
-  frequency,      // (0, kMaxFrequencyHz]
-};
-
-bool in_range(double v, Range range) {
-  switch (range) {
-    case Range::any: return true;
-    case Range::positive: return v > 0.0;
-    case Range::canvas_size: return v > 0.0 && v <= kMaxCanvasMm;
-    case Range::unit_closed: return v >= 0.0 && v <= 1.0;
-    case Range::unit_open: return v > 0.0 && v < 1.0;
-    case Range::frequency: return v > 0.0 && v <= kMaxFrequencyHz;
-  }
-  return false;
-}
-
-std::string range_text(Range range) {
-  switch (range) {
-    case Range::any: return "finite";
-    case Range::positive: return "> 0";
-    case Range::canvas_size: return "in (0, " + format_decimal(kMaxCanvasMm) + "]";
-    case Range::unit_closed: return "in [0, 1]";
-    case Range::unit_open: return "in (0, 1)";
-    case Range::frequency: return "in (0, " + format_decimal(kMaxFrequencyHz) + "]";
-  }
-  return "";
-}
 
 bool is_valid_id(std::string_view id) {
   if (id.empty()) return false;
@@ -132,7 +99,12 @@ class Reader {
         Image image;
         read_root(*root, image);
         check_duplicate_ids();
-        if (!failed()) result.image = std::move(image);
+        if (!failed()) {
+          result.image = std::move(image);
+        } else if (root_readable_) {
+          result.readable = std::move(image);
+          result.value_problems = std::move(value_problems_);
+        }
       }
     }
     result.diagnostics = list_.take();
@@ -140,7 +112,13 @@ class Reader {
   }
 
  private:
-  void error(int line, std::string_view message) { list_.error(line, message); }
+  // An error that leaves the element unreadable (it is not in LoadResult::readable).
+  void error(int line, std::string_view message) {
+    ++hard_errors_;
+    list_.error(line, message);
+  }
+  // An error that leaves the element readable: a value out of range, an id.
+  void readable_error(int line, std::string_view message) { list_.error(line, message); }
   void warning(int line, std::string_view message) { list_.warning(line, message); }
   bool failed() const { return list_.has_errors(); }
 
@@ -188,21 +166,25 @@ class Reader {
     return slots_[slot];
   }
 
-  // Reads a number attribute; `fallback` is used when it is absent (absent and no fallback is an error).
-  double number(const XMLElement& e, const char* name, Range range, std::optional<double> fallback) {
+  // Reads the number attribute `name` of `owner` (storage/parameter_table.hpp): its default when
+  // it is absent (absent and required is an error), the value as read when it is out of range.
+  double number(const XMLElement& e, ParameterOwner owner, std::string_view name) {
+    const ParameterSpec& spec = *find_parameter(owner, name);
+    const double fallback = spec.required ? 0.0 : spec.default_value;
     const XMLAttribute* a = attribute(e, name);
     if (a == nullptr) {
-      if (!fallback) error(e.GetLineNum(), tag(e) + " is missing required attribute '" + name + "'");
-      return fallback.value_or(0.0);
+      if (spec.required) error(e.GetLineNum(), tag(e) + " is missing required attribute '" + std::string(name) + "'");
+      return fallback;
     }
     const ParsedNumber parsed = parse_decimal(a->Value());
     if (const auto* reason = std::get_if<std::string>(&parsed)) {
-      error(a->GetLineNum(), tag(e) + " attribute '" + name + "' = \"" + q(a->Value()) + "\" " + *reason);
-      return fallback.value_or(0.0);
+      error(a->GetLineNum(), tag(e) + " attribute '" + std::string(name) + "' = \"" + q(a->Value()) + "\" " + *reason);
+      return fallback;
     }
     const double value = std::get<double>(parsed);
-    if (!in_range(value, range)) {
-      error(a->GetLineNum(), tag(e) + " attribute '" + name + "' must be " + range_text(range) + ", got " + q(a->Value()));
+    if (!in_range(spec, value)) {
+      readable_error(a->GetLineNum(), out_of_range_message(spec, q(a->Value())));
+      value_problems_.push_back({a->GetLineNum(), path_, &spec, value});
     }
     return value;
   }
@@ -212,7 +194,8 @@ class Reader {
     if (a == nullptr) return;
     element.id = a->Value();
     if (!is_valid_id(element.id)) {
-      error(a->GetLineNum(), tag(e) + " id \"" + q(element.id) + "\" must match [A-Za-z_][A-Za-z0-9_.-]*");
+      readable_error(a->GetLineNum(), tag(e) + " id \"" + q(element.id) + "\" must match [A-Za-z_][A-Za-z0-9_.-]*");
+      element.id.clear();
       return;
     }
     ids_.emplace_back(std::string_view(a->Value()), a->GetLineNum());
@@ -233,7 +216,7 @@ class Reader {
         for (std::size_t k = run; k < j; ++k) {
           const auto& first = ids_[keys[k].second];
           if (first.first != later.first) continue;  // a hash collision, not a duplicate
-          error(later.second, "duplicate id '" + q(later.first) + "' (first used on line " +
+          readable_error(later.second, "duplicate id '" + q(later.first) + "' (first used on line " +
                                   std::to_string(first.second) + ")");
           break;
         }
@@ -245,8 +228,9 @@ class Reader {
   void read_root(const XMLElement& root, Image& image) {
     image.extra_attributes = gather(root, kRootAttributes);
     read_version(root, image);
-    image.width_mm = number(root, "width", Range::canvas_size, std::nullopt);
-    image.height_mm = number(root, "height", Range::canvas_size, std::nullopt);
+    image.width_mm = number(root, ParameterOwner::canvas, "width");
+    image.height_mm = number(root, ParameterOwner::canvas, "height");
+    root_readable_ = hard_errors_ == 0;
     canvas_w_ = image.width_mm;
     canvas_h_ = image.height_mm;
     int meta_line = 0;
@@ -273,8 +257,8 @@ class Reader {
         }
         interaction_line = child->GetLineNum();
         image.interaction = read_interaction(*child);
-      } else {
-        image.children.push_back(read_element(*child, 0));
+      } else if (auto element = read_element(*child, 0, image.children.size())) {
+        image.children.push_back(std::move(*element));
       }
     }
   }
@@ -416,9 +400,9 @@ class Reader {
   InteractionParams read_interaction(const XMLElement& e) {
     InteractionParams p;
     p.extra_attributes = gather(e, kInteractionAttributes);
-    p.mass_kg = number(e, "mass", Range::positive, InteractionParams{}.mass_kg);
-    p.full_speed_mm_per_s = number(e, "fullSpeed", Range::positive, InteractionParams{}.full_speed_mm_per_s);
-    p.max_deformation_mm = number(e, "maxDeformation", Range::positive, InteractionParams{}.max_deformation_mm);
+    p.mass_kg = number(e, ParameterOwner::interaction, "mass");
+    p.full_speed_mm_per_s = number(e, ParameterOwner::interaction, "fullSpeed");
+    p.max_deformation_mm = number(e, ParameterOwner::interaction, "maxDeformation");
     for (const XMLNode* node = e.FirstChild(); node != nullptr; node = node->NextSibling()) {
       if (const XMLElement* c = node->ToElement()) {
         warning(c->GetLineNum(), "unknown element " + tag(*c) + " in <interaction> kept as is");
@@ -430,9 +414,23 @@ class Reader {
     return p;
   }
 
-  // A child of <vibroimage> or <group>: a primitive, a group, or an unknown element kept verbatim.
-  // `depth` is the number of groups around it.
-  Element read_element(const XMLElement& e, int depth) {
+  // A child of <vibroimage> or <group>: a primitive, a group, or an unknown element kept verbatim;
+  // nothing when it cannot be read (see LoadResult::readable). `depth` is the number of groups
+  // around it, `index` its place among the children read so far.
+  std::optional<Element> read_element(const XMLElement& e, int depth, std::size_t index) {
+    path_.push_back(index);
+    const std::size_t hard_before = hard_errors_;
+    const std::size_t problems_before = value_problems_.size();
+    std::optional<Element> element = read_element_body(e, depth);
+    if (hard_errors_ != hard_before && (!element || !std::holds_alternative<Group>(element->body))) {
+      element.reset();
+      value_problems_.resize(problems_before);
+    }
+    path_.pop_back();
+    return element;
+  }
+
+  std::optional<Element> read_element_body(const XMLElement& e, int depth) {
     Element element;
     element.source_line = e.GetLineNum();
     const std::string_view name = e.Name();
@@ -451,6 +449,10 @@ class Reader {
     } else if (name == "group") {
       element.extra_attributes = gather(e, kGroupAttributes);
       read_id(e, element);
+      if (depth + 1 > kMaxGroupDepth) {
+        error(e.GetLineNum(), "groups nested deeper than " + std::to_string(kMaxGroupDepth) + " levels");
+        return std::nullopt;
+      }
       element.body = read_group(e, depth + 1);
       return element;
     } else {
@@ -485,24 +487,24 @@ class Reader {
 
   Dot read_dot(const XMLElement& e) {
     Dot d;
-    d.x_mm = number(e, "x", Range::any, std::nullopt);
-    d.y_mm = number(e, "y", Range::any, std::nullopt);
-    d.radius_mm = number(e, "radius", Range::positive, Dot{}.radius_mm);
-    d.gain = number(e, "gain", Range::unit_closed, Dot{}.gain);
+    d.x_mm = number(e, ParameterOwner::dot, "x");
+    d.y_mm = number(e, ParameterOwner::dot, "y");
+    d.radius_mm = number(e, ParameterOwner::dot, "radius");
+    d.gain = number(e, ParameterOwner::dot, "gain");
     warn_if_outside(e, {d.x_mm - d.radius_mm, d.y_mm - d.radius_mm, d.x_mm + d.radius_mm, d.y_mm + d.radius_mm});
     return d;
   }
 
   Line read_line(const XMLElement& e) {
     Line l;
-    l.x1_mm = number(e, "x1", Range::any, std::nullopt);
-    l.y1_mm = number(e, "y1", Range::any, std::nullopt);
-    l.x2_mm = number(e, "x2", Range::any, std::nullopt);
-    l.y2_mm = number(e, "y2", Range::any, std::nullopt);
-    l.width_mm = number(e, "width", Range::positive, Line{}.width_mm);
-    l.frequency_hz = number(e, "frequency", Range::frequency, Line{}.frequency_hz);
-    l.damping = number(e, "damping", Range::unit_open, Line{}.damping);
-    l.gain = number(e, "gain", Range::unit_closed, Line{}.gain);
+    l.x1_mm = number(e, ParameterOwner::line, "x1");
+    l.y1_mm = number(e, ParameterOwner::line, "y1");
+    l.x2_mm = number(e, ParameterOwner::line, "x2");
+    l.y2_mm = number(e, ParameterOwner::line, "y2");
+    l.width_mm = number(e, ParameterOwner::line, "width");
+    l.frequency_hz = number(e, ParameterOwner::line, "frequency");
+    l.damping = number(e, ParameterOwner::line, "damping");
+    l.gain = number(e, ParameterOwner::line, "gain");
     const double half = l.width_mm / 2.0;
     warn_if_outside(e, {std::min(l.x1_mm, l.x2_mm) - half, std::min(l.y1_mm, l.y2_mm) - half,
                         std::max(l.x1_mm, l.x2_mm) + half, std::max(l.y1_mm, l.y2_mm) + half});
@@ -572,17 +574,17 @@ class Reader {
       error(e.GetLineNum(), "<surface> is missing required attribute 'shape'");
     } else if (std::string_view(shape->Value()) == "rect") {
       s.shape = SurfaceShape::rect;
-      s.x_mm = number(e, "x", Range::any, std::nullopt);
-      s.y_mm = number(e, "y", Range::any, std::nullopt);
-      s.width_mm = number(e, "width", Range::positive, std::nullopt);
-      s.height_mm = number(e, "height", Range::positive, std::nullopt);
+      s.x_mm = number(e, ParameterOwner::surface, "x");
+      s.y_mm = number(e, ParameterOwner::surface, "y");
+      s.width_mm = number(e, ParameterOwner::surface, "width");
+      s.height_mm = number(e, ParameterOwner::surface, "height");
       bounds = {s.x_mm, s.y_mm, s.x_mm + s.width_mm, s.y_mm + s.height_mm};
     } else if (std::string_view(shape->Value()) == "ellipse") {
       s.shape = SurfaceShape::ellipse;
-      s.cx_mm = number(e, "cx", Range::any, std::nullopt);
-      s.cy_mm = number(e, "cy", Range::any, std::nullopt);
-      s.rx_mm = number(e, "rx", Range::positive, std::nullopt);
-      s.ry_mm = number(e, "ry", Range::positive, std::nullopt);
+      s.cx_mm = number(e, ParameterOwner::surface, "cx");
+      s.cy_mm = number(e, ParameterOwner::surface, "cy");
+      s.rx_mm = number(e, ParameterOwner::surface, "rx");
+      s.ry_mm = number(e, ParameterOwner::surface, "ry");
       bounds = {s.cx_mm - s.rx_mm, s.cy_mm - s.ry_mm, s.cx_mm + s.rx_mm, s.cy_mm + s.ry_mm};
     } else if (std::string_view(shape->Value()) == "polygon") {
       s.shape = SurfaceShape::polygon;
@@ -597,10 +599,10 @@ class Reader {
     } else {
       error(shape->GetLineNum(), "<surface> attribute 'shape' = \"" + q(shape->Value()) + "\" must be rect, ellipse or polygon");
     }
-    s.period_mm = number(e, "period", Range::positive, Surface{}.period_mm);
-    s.relief_mm = number(e, "relief", Range::positive, Surface{}.relief_mm);
+    s.period_mm = number(e, ParameterOwner::surface, "period");
+    s.relief_mm = number(e, ParameterOwner::surface, "relief");
     s.pattern = read_pattern(e);
-    s.gain = number(e, "gain", Range::unit_closed, Surface{}.gain);
+    s.gain = number(e, ParameterOwner::surface, "gain");
     if (shape != nullptr) warn_if_outside(e, bounds);
     return s;
   }
@@ -612,20 +614,16 @@ class Reader {
     if (v == "sine") return SurfacePattern::sine;
     if (v == "square") return SurfacePattern::square;
     if (v == "triangle") return SurfacePattern::triangle;
-    error(a->GetLineNum(), "<surface> attribute 'pattern' = \"" + q(v) + "\" must be sine, square or triangle");
+    readable_error(a->GetLineNum(), "<surface> attribute 'pattern' = \"" + q(v) + "\" must be sine, square or triangle");
     return Surface{}.pattern;
   }
 
   Group read_group(const XMLElement& e, int depth) {
     Group g;
     if (const XMLAttribute* name = attribute(e, "name")) g.name = std::string(name->Value());
-    if (depth > kMaxGroupDepth) {
-      error(e.GetLineNum(), "groups nested deeper than " + std::to_string(kMaxGroupDepth) + " levels");
-      return g;
-    }
     for (const XMLNode* node = e.FirstChild(); node != nullptr; node = node->NextSibling()) {
       if (const XMLElement* c = node->ToElement()) {
-        g.children.push_back(read_element(*c, depth));
+        if (auto child = read_element(*c, depth, g.children.size())) g.children.push_back(std::move(*child));
       } else {
         note_text(*node, e);
       }
@@ -634,6 +632,10 @@ class Reader {
   }
 
   DiagnosticList list_;
+  std::size_t hard_errors_ = 0;  // errors that leave an element (or the root) unreadable
+  bool root_readable_ = false;   // version and canvas size read
+  std::vector<std::size_t> path_;  // of the element being read (ValueProblem::path)
+  std::vector<ValueProblem> value_problems_;
   std::vector<std::pair<std::string_view, int>> ids_;  // id text (owned by the document), line
   AttributeNames known_;
   std::array<const XMLAttribute*, kMaxSlots> slots_{};

@@ -2,9 +2,11 @@
 #include <string>
 #include <string_view>
 #include <unordered_set>
+#include <vector>
 
 #include "storage/image_io.hpp"
 #include "storage/number_text.hpp"
+#include "storage/parameter_table.hpp"
 
 namespace vimg {
 
@@ -25,6 +27,15 @@ void append_escaped(std::string& out, std::string_view text, bool attribute) {
   }
 }
 
+std::string points_text(const std::vector<Point2Mm>& points) {
+  std::string text;
+  for (const auto& p : points) {
+    if (!text.empty()) text += ' ';
+    text += format_decimal(p.x_mm) + "," + format_decimal(p.y_mm);
+  }
+  return text;
+}
+
 class Writer {
  public:
   explicit Writer(const Image& image) : image_(image) { collect_ids(image.children); }
@@ -32,8 +43,7 @@ class Writer {
   std::string run() {
     out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<vibroimage";
     attr("version", std::to_string(image_.version_major) + "." + std::to_string(image_.version_minor));
-    num("width", image_.width_mm);
-    num("height", image_.height_mm);
+    numbers(ParameterOwner::canvas, [&](const ParameterSpec& spec) { return number_in(image_, spec); });
     extras(image_.extra_attributes);
     out_ += ">\n";
     if (image_.meta) write_meta(*image_.meta);
@@ -41,9 +51,7 @@ class Writer {
       const InteractionParams& p = *image_.interaction;
       indent(1);
       out_ += "<interaction";
-      num("mass", p.mass_kg);
-      num("fullSpeed", p.full_speed_mm_per_s);
-      num("maxDeformation", p.max_deformation_mm);
+      numbers(ParameterOwner::interaction, [&](const ParameterSpec& spec) { return number_in(image_, spec); });
       extras(p.extra_attributes);
       if (p.unknown_children.empty()) {
         out_ += "/>\n";
@@ -84,6 +92,16 @@ class Writer {
     out_ += '"';
   }
   void num(std::string_view name, double value) { attr(name, format_decimal(value)); }
+
+  // Every number attribute of `owner` that `value_of` finds, in the parameter table's order (the
+  // canonical order); the table has no defaults to leave out: a canonical file states every value.
+  template <typename ValueOf>
+  void numbers(ParameterOwner owner, ValueOf value_of) {
+    for (const ParameterSpec& spec : parameter_table()) {
+      if (spec.owner != owner || spec.kind != ParameterKind::number) continue;
+      if (const double* value = value_of(spec)) num(spec.name, *value);
+    }
+  }
   void extras(const ExtraAttributes& extra) {
     for (const auto& [name, value] : extra) attr(name, value);
   }
@@ -157,23 +175,13 @@ class Writer {
   }
 
   void write_element(const Element& e, int depth) {
-    if (const auto* d = std::get_if<Dot>(&e.body)) {
+    if (std::holds_alternative<Dot>(e.body)) {
       open(depth, "dot", e, "dot");
-      num("x", d->x_mm);
-      num("y", d->y_mm);
-      num("radius", d->radius_mm);
-      num("gain", d->gain);
+      numbers(ParameterOwner::dot, [&](const ParameterSpec& spec) { return number_in(e, spec); });
       close(depth, "dot", e);
-    } else if (const auto* l = std::get_if<Line>(&e.body)) {
+    } else if (std::holds_alternative<Line>(e.body)) {
       open(depth, "line", e, "line");
-      num("x1", l->x1_mm);
-      num("y1", l->y1_mm);
-      num("x2", l->x2_mm);
-      num("y2", l->y2_mm);
-      num("width", l->width_mm);
-      num("frequency", l->frequency_hz);
-      num("damping", l->damping);
-      num("gain", l->gain);
+      numbers(ParameterOwner::line, [&](const ParameterSpec& spec) { return number_in(e, spec); });
       close(depth, "line", e);
     } else if (const auto* s = std::get_if<Surface>(&e.body)) {
       write_surface(e, *s, depth);
@@ -197,40 +205,18 @@ class Writer {
 
   void write_surface(const Element& e, const Surface& s, int depth) {
     open(depth, "surface", e, "surface");
-    switch (s.shape) {
-      case SurfaceShape::rect:
-        attr("shape", "rect");
-        num("x", s.x_mm);
-        num("y", s.y_mm);
-        num("width", s.width_mm);
-        num("height", s.height_mm);
-        break;
-      case SurfaceShape::ellipse:
-        attr("shape", "ellipse");
-        num("cx", s.cx_mm);
-        num("cy", s.cy_mm);
-        num("rx", s.rx_mm);
-        num("ry", s.ry_mm);
-        break;
-      case SurfaceShape::polygon: {
-        attr("shape", "polygon");
-        std::string points;
-        for (const auto& p : s.points) {
-          if (!points.empty()) points += ' ';
-          points += format_decimal(p.x_mm) + "," + format_decimal(p.y_mm);
-        }
-        attr("points", points);
-        break;
+    // The table's order: shape, the shape's geometry, period, relief, pattern, gain.
+    for (const ParameterSpec& spec : parameter_table()) {
+      if (spec.owner != ParameterOwner::surface || !applies_to_shape(spec, s.shape)) continue;
+      switch (spec.kind) {
+        case ParameterKind::number: num(spec.name, *number_in(e, spec)); break;
+        case ParameterKind::choice: attr(spec.name, spec.name == "shape" ? shape_name(s.shape) : pattern_name(s.pattern)); break;
+        case ParameterKind::points: attr(spec.name, points_text(s.points)); break;
+        case ParameterKind::id:
+        case ParameterKind::text:
+        case ParameterKind::version: break;  // the id is written by open()
       }
     }
-    num("period", s.period_mm);
-    num("relief", s.relief_mm);
-    switch (s.pattern) {
-      case SurfacePattern::sine: attr("pattern", "sine"); break;
-      case SurfacePattern::square: attr("pattern", "square"); break;
-      case SurfacePattern::triangle: attr("pattern", "triangle"); break;
-    }
-    num("gain", s.gain);
     close(depth, "surface", e);
   }
 
