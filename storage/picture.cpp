@@ -9,6 +9,7 @@
 
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
+#include "storage/palette.hpp"
 
 // Everything is drawn in pixel units: X = x_mm * scale, pixel px covers [px, px + 1) and is sampled
 // at its centre px + 0.5. A pixel's coverage is clamp(0.5 - d, 0, 1) for the signed distance d (in
@@ -21,34 +22,7 @@ namespace vimg {
 
 namespace {
 
-struct Rgb {
-  float r, g, b;
-};
-
-// Canvas and colours (0..255).
-constexpr Rgb kBackground{255, 255, 255};
-constexpr Rgb kDotColour{25, 25, 35};
-constexpr Rgb kLowFrequencyColour{240, 140, 0};    // 20 Hz and below: orange
-constexpr Rgb kMidFrequencyColour{220, 30, 90};    // ~140 Hz (geometric middle): crimson
-constexpr Rgb kHighFrequencyColour{110, 40, 200};  // 1000 Hz: violet
-constexpr Rgb kSurfaceColour{20, 120, 150};
-
-Rgb mix(const Rgb& a, const Rgb& b, double t) {
-  const auto f = static_cast<float>(t);
-  return {a.r + (b.r - a.r) * f, a.g + (b.g - a.g) * f, a.b + (b.b - a.b) * f};
-}
-
-// Pattern height in [0, 1] at phase u (in periods).
-double pattern_value(SurfacePattern pattern, double u) {
-  const double frac = u - std::floor(u);
-  switch (pattern) {
-    case SurfacePattern::sine: return 0.5 + 0.5 * std::sin(2.0 * std::numbers::pi * u);
-    case SurfacePattern::square: return frac < 0.5 ? 1.0 : 0.0;
-    case SurfacePattern::triangle: return frac < 0.5 ? 2.0 * frac : 2.0 - 2.0 * frac;
-  }
-  return 0.0;
-}
-
+using palette::Rgb8;
 // cos(2 pi u) for u in periods, from a table: 4096 steps a period, far below one colour level.
 class CosTable {
  public:
@@ -126,13 +100,17 @@ class Painter {
   PictureWork& work() { return work_; }
   std::uint8_t* row(int py) { return raster_.pixel(0, py); }
 
-  // Blends colour c at opacity a (0..1) into the pixel at p.
-  static void blend(std::uint8_t* p, const Rgb& c, float a) {
+  // Blends colour c at opacity a (0..1) into the pixel at p, in integers: the opacity in 1/256
+  // steps, each channel p + round((c - p) a) (exactly c at a = 1).
+  static void blend(std::uint8_t* p, const Rgb8& c, float a) {
     if (!(a > 0.0f)) return;
-    if (a > 1.0f) a = 1.0f;
-    p[0] = static_cast<std::uint8_t>(p[0] + (c.r - p[0]) * a + 0.5f);
-    p[1] = static_cast<std::uint8_t>(p[1] + (c.g - p[1]) * a + 0.5f);
-    p[2] = static_cast<std::uint8_t>(p[2] + (c.b - p[2]) * a + 0.5f);
+    const int a8 = a >= 1.0f ? 256 : static_cast<int>(a * 256.0f + 0.5f);
+    const auto channel = [a8](std::uint8_t& v, std::uint8_t to) {
+      v = static_cast<std::uint8_t>(v + (((to - v) * a8 + 128) >> 8));
+    };
+    channel(p[0], c.r);
+    channel(p[1], c.g);
+    channel(p[2], c.b);
   }
 
  private:
@@ -144,23 +122,20 @@ class Painter {
 };
 
 template <class Edge, class Alpha>
-void blend_row(std::uint8_t* row, int x0, int x1, int i0, int i1, const Rgb& colour, Edge edge, Alpha alpha) {
+void blend_row(std::uint8_t* row, int x0, int x1, int i0, int i1, const Rgb8& colour, Edge edge, Alpha alpha) {
   const int left_end = std::min(i0, x1 + 1);
   for (int px = x0; px < left_end; ++px) Painter::blend(row + 3 * px, colour, edge(px) * alpha(px));
   for (int px = i0; px <= i1; ++px) Painter::blend(row + 3 * px, colour, alpha(px));
   for (int px = std::max(i1 + 1, left_end); px <= x1; ++px) Painter::blend(row + 3 * px, colour, edge(px) * alpha(px));
 }
 
-// Opacity per pixel column of a surface's stripes across x: (0.25 + 0.75 gain)(0.3 + 0.7 pattern).
+// Opacity per pixel column of a surface's stripes across x (palette::surface_opacity).
 class StripeAlpha {
  public:
   StripeAlpha(const Surface& s, double scale, int first, int last) : first_(first) {
-    const double base = 0.25 + 0.75 * s.gain;
     alpha_.resize(static_cast<std::size_t>(last - first + 1));
     for (int px = first; px <= last; ++px) {
-      const double x_mm = (px + 0.5) / scale;
-      alpha_[static_cast<std::size_t>(px - first)] =
-          static_cast<float>(base * (0.3 + 0.7 * pattern_value(s.pattern, x_mm / s.period_mm)));
+      alpha_[static_cast<std::size_t>(px - first)] = static_cast<float>(palette::surface_opacity(s, (px + 0.5) / scale));
     }
   }
   float operator()(int px) const { return alpha_[static_cast<std::size_t>(px - first_)]; }
@@ -175,7 +150,7 @@ class StripeAlpha {
 void draw_dot(Painter& painter, const Dot& d) {
   const double s = painter.scale();
   const double cx = d.x_mm * s, cy = d.y_mm * s, r = d.radius_mm * s;
-  const float alpha = static_cast<float>(0.35 + 0.65 * d.gain);
+  const auto alpha = static_cast<float>(palette::stroke_opacity(d.gain));
   const double outer = r + 0.5, inner = r - 0.5;
   int y0 = 0, y1 = 0;
   if (!painter.rows(cy - outer, cy + outer, y0, y1)) return;
@@ -191,7 +166,7 @@ void draw_dot(Painter& painter, const Dot& d) {
     int i0 = 0, i1 = 0;
     inner_run(cx - half_in, cx + half_in, x0, x1, i0, i1);
     painter.work().pixels += static_cast<std::uint64_t>(x1 - x0 + 1);
-    blend_row(painter.row(py), x0, x1, i0, i1, kDotColour,
+    blend_row(painter.row(py), x0, x1, i0, i1, palette::kDot,
               [&](int px) {
                 const double dx = px + 0.5 - cx;
                 return coverage_of(std::sqrt(dx * dx + dy * dy) - r);
@@ -269,11 +244,8 @@ bool capsule_span(double ax, double ay, double bx, double by, double radius, dou
 
 void draw_line(Painter& painter, const Line& l) {
   const double s = painter.scale();
-  // Colour by frequency on a log scale from 20 Hz to 1000 Hz: orange, crimson, violet.
-  const double t = std::clamp(std::log(std::max(l.frequency_hz, 20.0) / 20.0) / std::log(50.0), 0.0, 1.0);
-  const Rgb base = t < 0.5 ? mix(kLowFrequencyColour, kMidFrequencyColour, 2.0 * t)
-                           : mix(kMidFrequencyColour, kHighFrequencyColour, 2.0 * t - 1.0);
-  const double base_alpha = 0.35 + 0.65 * l.gain;
+  const Rgb8 base = palette::line_colour(l.frequency_hz);
+  const double base_alpha = palette::stroke_opacity(l.gain);
   // Ripple along the stroke: 2 mm wavelength at 175 Hz, inversely proportional to frequency.
   const double ripple_px = 350.0 / l.frequency_hz * s;
   const double radius = l.width_mm / 2.0 * s;
@@ -349,7 +321,7 @@ void draw_rect(Painter& painter, const Surface& s) {
     if (qy <= -0.5) inner_run(cx - hx + 0.5, cx + hx - 0.5, c0, c1, i0, i1);
     else inner_run(1.0, 0.0, c0, c1, i0, i1);
     painter.work().pixels += static_cast<std::uint64_t>(c1 - c0 + 1);
-    blend_row(painter.row(py), c0, c1, i0, i1, kSurfaceColour,
+    blend_row(painter.row(py), c0, c1, i0, i1, palette::kSurface,
               [&](int px) {
                 const double qx = std::abs(px + 0.5 - cx) - hx;
                 const double ox = std::max(qx, 0.0), oy = std::max(qy, 0.0);
@@ -382,7 +354,7 @@ void draw_ellipse(Painter& painter, const Surface& s) {
     inner_run(cx - half_in, cx + half_in, x0, x1, i0, i1);
     painter.work().pixels += static_cast<std::uint64_t>(x1 - x0 + 1);
     const double v = dy / ry;
-    blend_row(painter.row(py), x0, x1, i0, i1, kSurfaceColour,
+    blend_row(painter.row(py), x0, x1, i0, i1, palette::kSurface,
               [&](int px) {
                 // First-order distance to the ellipse: (k - 1) / |grad k| with k = |(dx/rx, dy/ry)|.
                 const double u = (px + 0.5 - cx) / rx;
@@ -556,7 +528,7 @@ void draw_polygon(Painter& painter, const Surface& s) {
         c = std::fmod(c, 2.0);
         if (c > 1.0) c = 2.0 - c;
       }
-      if (c > 1e-6) Painter::blend(row + 3 * px, kSurfaceColour, static_cast<float>(c) * alpha(px));
+      if (c > 1e-6) Painter::blend(row + 3 * px, palette::kSurface, static_cast<float>(c) * alpha(px));
     }
     std::fill(acc.begin() + c1 + 1, acc.end(), 0.0);
   }
@@ -636,8 +608,9 @@ std::optional<std::string> draw_picture(const Image& image, double scale_px_per_
   raster.width = size.width_px;
   raster.height = size.height_px;
   raster.rgb.assign(static_cast<std::size_t>(size.width_px) * static_cast<std::size_t>(size.height_px) * 3,
-                    static_cast<std::uint8_t>(kBackground.r));
-  static_assert(kBackground.r == kBackground.g && kBackground.g == kBackground.b, "one fill value");
+                    palette::kBackground.r);
+  static_assert(palette::kBackground.r == palette::kBackground.g && palette::kBackground.g == palette::kBackground.b,
+                "one fill value");
   PictureWork unused;
   Painter painter(raster, scale_px_per_mm, work != nullptr ? *work : unused);
   std::vector<Item> items;
@@ -646,13 +619,33 @@ std::optional<std::string> draw_picture(const Image& image, double scale_px_per_
   std::erase_if(items, [&](const Item& item) {
     return !(item.bottom_px >= 0.0) || !(item.top_px <= raster.height) || !(item.top_px <= item.bottom_px);
   });
-  for (int band = 0; band < raster.height; band += kBandRows) {
-    const int band_end = std::min(raster.height, band + kBandRows);
-    painter.set_band(band, band_end);
-    for (const Item& item : items) {
-      if (item.bottom_px < band || item.top_px > band_end) continue;
-      draw_item(painter, *item.element);
-    }
+  // Each band's items in paint order, found once (not by testing every item in every band).
+  const std::size_t bands = static_cast<std::size_t>((raster.height + kBandRows - 1) / kBandRows);
+  std::vector<std::uint32_t> count(bands + 1, 0);
+  const auto band_range = [&](const Item& item, std::size_t& first, std::size_t& last) {
+    // A band [b, b + kBandRows) is visited when top_px <= b + kBandRows and bottom_px >= b.
+    const double lo = std::floor((item.top_px - kBandRows) / kBandRows);
+    const double hi = std::floor(item.bottom_px / kBandRows);
+    first = static_cast<std::size_t>(std::clamp(lo, 0.0, static_cast<double>(bands - 1)));
+    last = static_cast<std::size_t>(std::clamp(hi, 0.0, static_cast<double>(bands - 1)));
+  };
+  for (const Item& item : items) {
+    std::size_t first = 0, last = 0;
+    band_range(item, first, last);
+    for (std::size_t b = first; b <= last; ++b) ++count[b + 1];
+  }
+  for (std::size_t b = 0; b < bands; ++b) count[b + 1] += count[b];
+  std::vector<const Element*> by_band(count[bands]);
+  std::vector<std::uint32_t> fill(count.begin(), count.end() - 1);
+  for (const Item& item : items) {
+    std::size_t first = 0, last = 0;
+    band_range(item, first, last);
+    for (std::size_t b = first; b <= last; ++b) by_band[fill[b]++] = item.element;
+  }
+  for (std::size_t b = 0; b < bands; ++b) {
+    const int band = static_cast<int>(b) * kBandRows;
+    painter.set_band(band, std::min(raster.height, band + kBandRows));
+    for (std::uint32_t i = count[b]; i < count[b + 1]; ++i) draw_item(painter, *by_band[i]);
   }
   return std::nullopt;
 }

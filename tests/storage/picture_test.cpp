@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "storage/palette.hpp"
 #include "storage/picture.hpp"
 
 namespace vimg {
@@ -168,6 +169,63 @@ TEST(Picture, HugeFiniteCoordinatesNeitherOverflowNorHang) {
   const RgbRaster r = draw(image, 10.0, &work);
   EXPECT_GT(ink(r, 100, 100), 0);
   EXPECT_LE(work.edge_steps, 20u * 200u);
+}
+
+// One look (docs/format.md, storage/palette.hpp): a surface's stripes run vertically on every
+// shape; its opacity at x follows palette::surface_opacity, so a fully opaque stripe is exactly
+// the palette's surface colour and the picture repeats with the period along x, never along y.
+TEST(Picture, SurfaceStripesRunVerticallyOnEveryShape) {
+  for (const SurfaceShape shape : {SurfaceShape::rect, SurfaceShape::ellipse, SurfaceShape::polygon}) {
+    Image image = canvas(40, 40);
+    Surface s;
+    s.shape = shape;
+    s.x_mm = 5;
+    s.y_mm = 5;
+    s.width_mm = 30;
+    s.height_mm = 30;
+    s.cx_mm = 20;
+    s.cy_mm = 20;
+    s.rx_mm = 15;
+    s.ry_mm = 15;
+    s.points = {{5, 5}, {35, 5}, {35, 35}, {5, 35}};
+    s.pattern = SurfacePattern::sine;
+    s.period_mm = 4;  // 16 px at 4 px/mm
+    s.gain = 1.0;
+    Element e;
+    e.body = s;
+    image.children.push_back(e);
+    const RgbRaster r = draw(image, 4.0);
+    int varying_columns = 0;
+    for (int x = 64; x < 96; ++x) {  // well inside every shape: x and y in [16, 24] mm
+      for (int y = 64; y < 96; ++y) {
+        ASSERT_EQ(ink(r, x, y), ink(r, x, 64)) << "shape " << static_cast<int>(shape) << " column " << x << " row " << y;
+      }
+      EXPECT_NEAR(ink(r, x, 80), ink(r, x + 16, 80), 3) << "one period along x";
+      const double expected = palette::surface_opacity(s, (x + 0.5) / 4.0);
+      const double full = 765 - palette::kSurface.r - palette::kSurface.g - palette::kSurface.b;
+      EXPECT_NEAR(ink(r, x, 80), expected * full, 4) << "column " << x;
+      if (std::abs(ink(r, x, 80) - ink(r, 64, 80)) > 20) ++varying_columns;
+    }
+    EXPECT_GT(varying_columns, 8) << "the stripes vary across x";
+  }
+}
+
+TEST(Picture, AnOpaqueSurfaceIsExactlyThePaletteColour) {
+  Image image = canvas(20, 20);
+  Surface s;
+  s.x_mm = 2;
+  s.y_mm = 2;
+  s.width_mm = 16;
+  s.height_mm = 16;
+  s.gain = 1.0;
+  add_surface(image, s);  // square pattern, one stripe: opacity 1 everywhere
+  const RgbRaster r = draw(image, 4.0);
+  const std::uint8_t* p = r.pixel(40, 40);
+  EXPECT_EQ(p[0], palette::kSurface.r);
+  EXPECT_EQ(p[1], palette::kSurface.g);
+  EXPECT_EQ(p[2], palette::kSurface.b);
+  const std::uint8_t* outside = r.pixel(2, 2);
+  EXPECT_EQ(outside[0], palette::kBackground.r);
 }
 
 }  // namespace
