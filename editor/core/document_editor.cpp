@@ -288,6 +288,44 @@ void DocumentEditor::replace_element(const std::string& id, const Element& eleme
   after_change();
 }
 
+namespace {
+
+Element* find_nested(std::vector<Element>& elements, const std::string& id) {
+  for (Element& e : elements) {
+    if (e.id == id) return &e;
+    if (auto* g = std::get_if<Group>(&e.body)) {
+      if (Element* found = find_nested(g->children, id)) return found;
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+std::size_t DocumentEditor::clamp_values(const std::vector<ClampFix>& fixes) {
+  Image next = image_;
+  std::size_t changed = 0;
+  for (const ClampFix& fix : fixes) {
+    if (fix.parameter == nullptr) continue;
+    double* value = nullptr;
+    if (fix.element_id.empty()) {
+      value = number_in(next, *fix.parameter);
+    } else if (Element* e = find_nested(next.children, fix.element_id)) {
+      value = number_in(*e, *fix.parameter);
+    }
+    if (value == nullptr) continue;
+    const double clamped = clamp_to_range(*fix.parameter, *value);
+    if (clamped == *value) continue;
+    *value = clamped;
+    ++changed;
+  }
+  if (changed == 0) return 0;
+  before_change();
+  image_ = std::move(next);
+  after_change();
+  return changed;
+}
+
 void DocumentEditor::replace_image_settings(const Image& settings) {
   Image next = settings;
   next.children = image_.children;

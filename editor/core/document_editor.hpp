@@ -2,11 +2,13 @@
 // The editing model behind the editor's canvas: the document, the selection, the clipboard and
 // unlimited undo/redo. Every edit is one undoable step; a continuous gesture (a drag, a slider)
 // is bracketed by begin_gesture/end_gesture and becomes one step. No GUI code here.
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "editor/core/document_problems.hpp"
 #include "editor/core/geometry.hpp"
 #include "primitives/image.hpp"
 
@@ -52,6 +54,9 @@ class DocumentEditor {
   void ungroup_selection();
   void replace_element(const std::string& id, const Element& element);  // property edits
   void replace_image_settings(const Image& settings);  // size, meta, interaction; not children
+  // Clamps each value the fixes name into its range (storage/parameter_table.hpp), as it is now:
+  // one undoable step for all of them. Returns how many values changed (0: no step).
+  std::size_t clamp_values(const std::vector<ClampFix>& fixes);
 
   // A gesture collects the edits made until end_gesture into one undo step (none if nothing changed).
   void begin_gesture();

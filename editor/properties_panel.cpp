@@ -1,18 +1,16 @@
-// The side panels: tools and library (left), properties of the selection or the document, and
-// validation messages (right), the oscilloscope in playing mode (bottom).
+// The inspector's properties panel (properties_panel.hpp).
+#include "editor/properties_panel.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <regex>
 
 #include "editor/core/element_ids.hpp"
-#include "editor/editor_app.hpp"
-#include "player/touch_event.hpp"
-#include "storage/image_io.hpp"
+#include "editor/core/layout_log.hpp"
 
 namespace vimg::editor {
 namespace {
@@ -20,7 +18,6 @@ namespace {
 constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                          ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                                          ImGuiWindowFlags_NoBringToFrontOnFocus;
-constexpr const char* kLibraryPayload = "VIMG_LIBRARY_FILE";
 
 struct FieldResult {
   bool changed = false;
@@ -59,104 +56,30 @@ FieldResult number_field(const char* label, double& value, const char* unit, dou
 
 }  // namespace
 
-void EditorApp::track_widget_gesture() {
+PropertiesPanel::PropertiesPanel(DocumentEditor& doc, Notices& notices, LayoutLog& layout)
+    : doc_(doc), notices_(notices), layout_(layout) {}
+
+void PropertiesPanel::track_widget_gesture() {
   if (ImGui::IsItemActivated()) doc_.begin_gesture();
   if (ImGui::IsItemDeactivated()) doc_.end_gesture();
 }
 
-void EditorApp::draw_tools_panel(float x, float y, float w, float h) {
-  ImGui::SetNextWindowPos(ImVec2(x, y));
-  ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Tools", nullptr, kPanelFlags);
-  const bool playing = play_mode_;
-  if (ImGui::Button(playing ? "Stop playing (F5)" : "Play (F5)", ImVec2(-1, 30))) set_play_mode(!playing);
-  print_layout("play_button", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
-               ImGui::GetItemRectSize().y);
-  if (playing && play_) {
-    bool rec = play_->recording();
-    if (ImGui::Checkbox("Record gesture", &rec)) play_->set_recording(rec);
-    ImGui::TextDisabled("%zu samples recorded", play_->recorder().samples().size());
-    ImGui::TextWrapped("Rub the canvas with the mouse or your fingers.");
-  }
-  ImGui::Separator();
-  ImGui::BeginDisabled(playing);
-  struct ToolButton {
-    Tool tool;
-    const char* label;
-  };
-  static constexpr ToolButton kTools[] = {{Tool::select, "Select (V)"},       {Tool::dot, "DOT (D)"},
-                                          {Tool::line, "LINE (L)"},           {Tool::rect, "SURFACE rect (R)"},
-                                          {Tool::ellipse, "SURFACE ellipse (E)"}, {Tool::polygon, "SURFACE polygon (P)"}};
-  for (const ToolButton& t : kTools) {
-    if (ImGui::RadioButton(t.label, tool_ == t.tool)) {
-      tool_ = t.tool;
-      polygon_points_.clear();
-    }
-  }
-  if (tool_ == Tool::polygon) ImGui::TextWrapped("Click the vertices; Enter or a click on the first one closes.");
-  ImGui::Checkbox("Grid (G)", &show_grid_);
-  ImGui::SameLine();
-  ImGui::Checkbox("Snap (S)", &snap_);
-  ImGui::EndDisabled();
-
-  ImGui::Separator();
-  ImGui::Text("Library");
-  ImGui::SameLine();
-  if (ImGui::SmallButton("Refresh")) refresh_library();
-  ImGui::TextDisabled("drag an image onto the canvas");
-  ImGui::BeginChild("##library", ImVec2(0, 0), true);
-  for (const auto& path : library_) {
-    const std::string name = path.parent_path().filename().string() + "/" + path.filename().string();
-    ImGui::Selectable(name.c_str());
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", path.c_str());
-    if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(0)) request(PendingAction::open_file, path.string());
-    if (!playing && ImGui::BeginDragDropSource()) {
-      const std::string p = path.string();
-      ImGui::SetDragDropPayload(kLibraryPayload, p.data(), p.size());
-      ImGui::Text("place %s", name.c_str());
-      ImGui::EndDragDropSource();
-    }
-  }
-  ImGui::EndChild();
-  ImGui::End();
-}
-
-void EditorApp::refresh_library() {
-  library_.clear();
-  std::vector<std::filesystem::path> dirs{VIMG_EXAMPLES_DIR};
-  if (!options_.library_dir.empty()) {
-    dirs.emplace_back(options_.library_dir);
-  } else if (const char* home = std::getenv("HOME"); home && *home) {
-    dirs.push_back(std::filesystem::path(home) / "vibroimages");
-  }
-  for (const auto& dir : dirs) {
-    std::error_code ec;
-    std::vector<std::filesystem::path> found;
-    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-      const auto ext = entry.path().extension();
-      if (entry.is_regular_file() && (ext == ".vimg" || ext == ".png")) found.push_back(entry.path());
-    }
-    std::sort(found.begin(), found.end());
-    library_.insert(library_.end(), found.begin(), found.end());
-  }
-}
-
-void EditorApp::draw_properties_panel(float x, float y, float w, float h) {
+void PropertiesPanel::draw(float x, float y, float w, float h) {
   ImGui::SetNextWindowPos(ImVec2(x, y));
   ImGui::SetNextWindowSize(ImVec2(w, h));
   ImGui::Begin("Properties", nullptr, kPanelFlags);
   if (doc_.selection().size() == 1) {
-    draw_element_properties(doc_.selection().front());
+    draw_element(doc_.selection().front());
   } else if (doc_.selection().size() > 1) {
     ImGui::Text("%zu elements selected", doc_.selection().size());
     if (ImGui::Button("Group (Ctrl+G)")) doc_.group_selection();
   } else {
-    draw_document_properties();
+    draw_document();
   }
   ImGui::End();
 }
 
-void EditorApp::draw_element_properties(const std::string& id) {
+void PropertiesPanel::draw_element(const std::string& id) {
   const Element* current = doc_.find(id);
   if (!current) return;
   Element e = *current;
@@ -167,27 +90,25 @@ void EditorApp::draw_element_properties(const std::string& id) {
     changed |= r.changed;
     if (r.activated) doc_.begin_gesture();
     if (r.deactivated) doc_.end_gesture();
-    print_layout(label, r.min.x, r.min.y, r.size.x, r.size.y);
+    layout_.print(label, r.min.x, r.min.y, r.size.x, r.size.y);
   };
   // Wherever a coordinate may go: the document's size bound of the spec, with room off the canvas.
   constexpr double kCoord = 10000.0;
 
   ImGui::Text("%s", kind_name(e).c_str());
-  static char id_buffer[128];
-  static std::string id_for;
-  if (id_for != id || !ImGui::IsAnyItemActive()) {
-    std::snprintf(id_buffer, sizeof id_buffer, "%s", id.c_str());
-    id_for = id;
+  if (id_for_ != id || !ImGui::IsAnyItemActive()) {
+    std::snprintf(id_buffer_, sizeof id_buffer_, "%s", id.c_str());
+    id_for_ = id;
   }
   ImGui::SetNextItemWidth(160);
-  if (ImGui::InputText("id", id_buffer, sizeof id_buffer, ImGuiInputTextFlags_EnterReturnsTrue)) {
+  if (ImGui::InputText("id", id_buffer_, sizeof id_buffer_, ImGuiInputTextFlags_EnterReturnsTrue)) {
     static const std::regex kIdPattern("[A-Za-z_][A-Za-z0-9_.-]*");
-    const std::string wanted = id_buffer;
+    const std::string wanted = id_buffer_;
     const auto ids = collect_ids(doc_.image());
     if (!std::regex_match(wanted, kIdPattern)) {
-      status_ = "an id starts with a letter or _ and holds letters, digits, _ . -";
+      notices_.status = "an id starts with a letter or _ and holds letters, digits, _ . -";
     } else if (wanted != id && ids.count(wanted)) {
-      status_ = "id " + wanted + " is already used";
+      notices_.status = "id " + wanted + " is already used";
     } else {
       e.id = wanted;
       changed = true;
@@ -280,15 +201,13 @@ void EditorApp::draw_element_properties(const std::string& id) {
     }
     field("gain##surface", s->gain, "", 0, 1);
   } else if (auto* g = std::get_if<Group>(&e.body)) {
-    static char name_buffer[256];
-    static std::string name_for;
-    if (name_for != id || !ImGui::IsAnyItemActive()) {
-      std::snprintf(name_buffer, sizeof name_buffer, "%s", g->name.value_or("").c_str());
-      name_for = id;
+    if (name_for_ != id || !ImGui::IsAnyItemActive()) {
+      std::snprintf(name_buffer_, sizeof name_buffer_, "%s", g->name.value_or("").c_str());
+      name_for_ = id;
     }
     ImGui::SetNextItemWidth(200);
-    if (ImGui::InputText("name", name_buffer, sizeof name_buffer, ImGuiInputTextFlags_EnterReturnsTrue)) {
-      g->name = name_buffer[0] ? std::optional<std::string>(name_buffer) : std::nullopt;
+    if (ImGui::InputText("name", name_buffer_, sizeof name_buffer_, ImGuiInputTextFlags_EnterReturnsTrue)) {
+      g->name = name_buffer_[0] ? std::optional<std::string>(name_buffer_) : std::nullopt;
       changed = true;
     }
     ImGui::Text("%zu members", g->children.size());
@@ -300,7 +219,7 @@ void EditorApp::draw_element_properties(const std::string& id) {
   if (changed) doc_.replace_element(id, e);
 }
 
-void EditorApp::draw_document_properties() {
+void PropertiesPanel::draw_document() {
   Image settings = doc_.image();
   settings.children.clear();
   bool changed = false;
@@ -309,7 +228,7 @@ void EditorApp::draw_document_properties() {
     changed |= r.changed;
     if (r.activated) doc_.begin_gesture();
     if (r.deactivated) doc_.end_gesture();
-    print_layout(label, r.min.x, r.min.y, r.size.x, r.size.y);
+    layout_.print(label, r.min.x, r.min.y, r.size.x, r.size.y);
   };
   ImGui::Text("Document (select an element to edit it)");
   field("width##doc", settings.width_mm, "mm", 0, 10000, true);
@@ -326,18 +245,16 @@ void EditorApp::draw_document_properties() {
   ImGui::Text("Meta");
   Meta meta = settings.meta.value_or(Meta{});
   auto text_field = [&](const char* label, std::optional<std::string>& value) {
-    static char buffers[4][512];
-    static std::string shown[4];
     const int slot = static_cast<int>(std::strlen(label)) % 4;
     ImGui::PushID(label);
     const std::string current = value.value_or("");
-    if (shown[slot] != current && !ImGui::IsAnyItemActive()) {
-      std::snprintf(buffers[slot], sizeof buffers[slot], "%s", current.c_str());
-      shown[slot] = current;
+    if (meta_shown_[slot] != current && !ImGui::IsAnyItemActive()) {
+      std::snprintf(meta_buffers_[slot], sizeof meta_buffers_[slot], "%s", current.c_str());
+      meta_shown_[slot] = current;
     }
     ImGui::SetNextItemWidth(220);
-    if (ImGui::InputText(label, buffers[slot], sizeof buffers[slot], ImGuiInputTextFlags_EnterReturnsTrue)) {
-      value = buffers[slot][0] ? std::optional<std::string>(buffers[slot]) : std::nullopt;
+    if (ImGui::InputText(label, meta_buffers_[slot], sizeof meta_buffers_[slot], ImGuiInputTextFlags_EnterReturnsTrue)) {
+      value = meta_buffers_[slot][0] ? std::optional<std::string>(meta_buffers_[slot]) : std::nullopt;
       changed = true;
     }
     ImGui::PopID();
@@ -352,56 +269,6 @@ void EditorApp::draw_document_properties() {
   ImGui::Separator();
   ImGui::TextDisabled("Canvas: %g x %g mm, %zu top-level elements", doc_.image().width_mm, doc_.image().height_mm,
                       doc_.image().children.size());
-}
-
-void EditorApp::refresh_validation() {
-  if (validated_change_ == doc_.change_count()) return;
-  const double now = monotonic_s();
-  if (validation_due_s_ == 0.0) validation_due_s_ = now + 0.3;  // wait for a pause in editing
-  if (now < validation_due_s_ || doc_.in_gesture()) return;
-  validation_due_s_ = 0.0;
-  validated_change_ = doc_.change_count();
-  // Check the document exactly as a reader will: write it canonically and read it back.
-  const std::string name = document_path_.empty() ? "untitled.vimg" : document_path_;
-  LoadResult result = parse_image_xml(write_image_xml(doc_.image()), name);
-  diagnostics_ = result.diagnostics;
-}
-
-void EditorApp::draw_messages_panel(float x, float y, float w, float h) {
-  ImGui::SetNextWindowPos(ImVec2(x, y));
-  ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Validation", nullptr, kPanelFlags);
-  if (diagnostics_.empty() && load_diagnostics_.empty()) {
-    ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "The image is valid.");
-  }
-  for (const auto* list : {&load_diagnostics_, &diagnostics_}) {
-    for (const Diagnostic& d : *list) {
-      const ImVec4 colour = d.severity == Diagnostic::Severity::error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f)
-                                                                      : ImVec4(1.0f, 0.85f, 0.4f, 1.0f);
-      ImGui::PushStyleColor(ImGuiCol_Text, colour);
-      ImGui::TextWrapped("%s", d.to_string().c_str());
-      ImGui::PopStyleColor();
-    }
-  }
-  ImGui::End();
-}
-
-void EditorApp::draw_scope_panel(float x, float y, float w, float h) {
-  ImGui::SetNextWindowPos(ImVec2(x, y));
-  ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Drive (oscilloscope)", nullptr, kPanelFlags);
-  const DriveTap* tap = play_ ? play_->tap() : nullptr;
-  const double rate = tap ? tap->sample_rate_hz() : 0.0;
-  const std::size_t count = rate > 0 ? static_cast<std::size_t>(rate * 0.1) : 800;  // the last 100 ms
-  if (tap) tap->copy_recent(scope_samples_, count);
-  const LoopStats stats = play_ ? play_->stats() : LoopStats{};
-  ImGui::Text("last 100 ms at %.0f Hz | loop %.0f Hz, jitter p99 %.2f ms | overruns %llu | contacts %llu", rate,
-              stats.measured_rate_hz, stats.jitter_p99_s * 1e3, static_cast<unsigned long long>(stats.overruns),
-              static_cast<unsigned long long>(stats.active_contacts));
-  const ImVec2 avail = ImGui::GetContentRegionAvail();
-  ImGui::PlotLines("##drive", scope_samples_.data(), static_cast<int>(scope_samples_.size()), 0, nullptr, -1.0f, 1.0f,
-                   ImVec2(avail.x, std::max(20.0f, avail.y)));
-  ImGui::End();
 }
 
 }  // namespace vimg::editor

@@ -1,0 +1,211 @@
+// The dialogs (problem, recovery, unsaved changes, file) and the file actions they lead to
+// (editor_app.hpp).
+#include <imgui.h>
+
+#include <cstdio>
+
+#include "editor/editor_app.hpp"
+
+namespace vimg::editor {
+
+void EditorApp::request(PendingAction action, std::string path) {
+  if (session_.editor().dirty() && action != PendingAction::none) {
+    pending_ = action;
+    pending_path_ = std::move(path);
+    unsaved_prompt_opening_ = true;
+    return;
+  }
+  perform(action, path);
+}
+
+void EditorApp::perform(PendingAction action, const std::string& path) {
+  pending_ = PendingAction::none;
+  switch (action) {
+    case PendingAction::new_document:
+      set_play_mode(false);
+      session_.new_document();
+      notices_.status = "new document";
+      break;
+    case PendingAction::open_file: open_file(path); break;
+    case PendingAction::quit: quit_ = true; break;
+    case PendingAction::none: break;
+  }
+}
+
+bool EditorApp::open_file(const std::string& path) {
+  if (auto error = session_.open(path, [this] { set_play_mode(false); })) {
+    notices_.report_error(*error);
+    return false;
+  }
+  notices_.status = "opened " + path;
+  return true;
+}
+
+bool EditorApp::save_to(const std::string& path, bool becomes_document_path) {
+  if (auto error = session_.save_to(path, becomes_document_path)) {
+    notices_.report_error(*error);
+    return false;
+  }
+  notices_.status = "saved " + path;
+  return true;
+}
+
+void EditorApp::save() {
+  if (session_.path().empty()) {
+    prompt_path(PathPrompt::save_as, "untitled.vimg");
+    return;
+  }
+  save_to(session_.path(), true);
+}
+
+void EditorApp::prompt_path(PathPrompt what, const std::string& initial) {
+  path_prompt_ = what;
+  path_prompt_opening_ = true;
+  std::snprintf(path_buffer_, sizeof path_buffer_, "%s", initial.c_str());
+}
+
+void EditorApp::draw_dialogs() {
+  if (notices_.error_opening) {
+    ImGui::OpenPopup("Problem");
+    notices_.error_opening = false;
+  }
+  if (recovery_prompt_opening_ && !ImGui::IsPopupOpen("Problem")) {
+    ImGui::OpenPopup("Recover unsaved work?");
+    recovery_prompt_opening_ = false;
+  }
+  if (unsaved_prompt_opening_) {
+    ImGui::OpenPopup("Unsaved changes");
+    unsaved_prompt_opening_ = false;
+  }
+  if (path_prompt_opening_) {
+    ImGui::OpenPopup("File");
+    path_prompt_opening_ = false;
+    ++path_prompt_count_;
+  }
+  const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
+  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (ImGui::BeginPopupModal("Problem", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextUnformatted(notices_.error_message.c_str());
+    if (ImGui::Button("OK", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) {
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+  draw_recovery_dialog();
+  draw_unsaved_dialog();
+  draw_path_dialog();
+}
+
+void EditorApp::draw_recovery_dialog() {
+  const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
+  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  const std::string origin = session_.recovery_origin().string();
+  ImGui::Text("vimg-editor did not close normally last time.");
+  ImGui::Text("Unsaved work of %s was kept.", origin.empty() ? "an untitled document" : origin.c_str());
+  ImGui::Text("Recover it?  (Enter: recover, Esc: discard)");
+  layout_.print("recover_dialog", ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowWidth(),
+                ImGui::GetWindowHeight());
+  const bool recover = ImGui::Button("Recover", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
+  ImGui::SameLine();
+  const bool discard = ImGui::Button("Discard", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+  if (recover) {
+    if (auto error = session_.recover()) {
+      notices_.error_message = *error;
+      notices_.error_opening = true;
+    } else {
+      notices_.status = "recovered unsaved work";
+    }
+    ImGui::CloseCurrentPopup();
+  } else if (discard) {
+    session_.discard_recovery();
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+void EditorApp::draw_unsaved_dialog() {
+  const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
+  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::Text("%s has unsaved changes.", session_.path().empty() ? "This document" : session_.path().c_str());
+  ImGui::Text("Save them first?");
+  if (ImGui::Button("Save", ImVec2(110, 0))) {
+    ImGui::CloseCurrentPopup();
+    if (session_.path().empty()) {
+      prompt_path(PathPrompt::save_as, "untitled.vimg");  // the pending action runs after the save
+    } else if (save_to(session_.path(), true)) {
+      perform(pending_, pending_path_);
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Discard", ImVec2(110, 0))) {
+    ImGui::CloseCurrentPopup();
+    const PendingAction action = pending_;
+    session_.editor().mark_saved();  // the user chose to lose them
+    perform(action, pending_path_);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    pending_ = PendingAction::none;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+void EditorApp::path_chosen(const std::string& path) {
+  if (path_prompt_ == PathPrompt::open) {
+    request(PendingAction::open_file, path);
+  } else if (path_prompt_ == PathPrompt::save_as) {
+    if (save_to(path, true) && pending_ != PendingAction::none) perform(pending_, pending_path_);
+  } else if (auto error = playback_.save_gesture(path)) {
+    notices_.report_error(*error);
+  } else {
+    notices_.status = "gesture saved to " + path;
+  }
+  path_prompt_ = PathPrompt::none;
+}
+
+void EditorApp::draw_path_dialog() {
+  const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
+  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(620, 0));
+  if (!ImGui::BeginPopupModal("File", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  const char* what = path_prompt_ == PathPrompt::open      ? "Open a .vimg or .png image:"
+                     : path_prompt_ == PathPrompt::save_as ? "Save as (.vimg for XML, .png for a picture with the XML inside):"
+                                                           : "Save the recorded gesture as CSV:";
+  ImGui::TextUnformatted(what);
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  ImGui::SetNextItemWidth(-1);
+  const bool entered = ImGui::InputText("##path", path_buffer_, sizeof path_buffer_,
+                                        ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+  if (ImGui::IsItemActive()) {  // ready for typing (scripted tests wait for this)
+    layout_.print("file_prompt" + std::to_string(path_prompt_count_), ImGui::GetItemRectMin().x,
+                  ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x, ImGui::GetItemRectSize().y);
+  }
+  if (path_prompt_ == PathPrompt::open) {
+    ImGui::TextDisabled("Recent files and examples:");
+    std::vector<std::string> choices = session_.recent().paths();
+    for (const auto& p : library_.files()) choices.push_back(p.string());
+    ImGui::BeginChild("##choices", ImVec2(0, 160), true);
+    for (const std::string& c : choices) {
+      if (ImGui::Selectable(c.c_str())) std::snprintf(path_buffer_, sizeof path_buffer_, "%s", c.c_str());
+    }
+    ImGui::EndChild();
+  }
+  const bool ok = ImGui::Button("OK", ImVec2(120, 0)) || entered;
+  ImGui::SameLine();
+  const bool cancel = ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+  if (ok && path_buffer_[0] != 0) {
+    const std::string path = path_buffer_;
+    ImGui::CloseCurrentPopup();
+    path_chosen(path);
+  } else if (cancel) {
+    pending_ = PendingAction::none;
+    path_prompt_ = PathPrompt::none;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+}  // namespace vimg::editor

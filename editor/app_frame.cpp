@@ -1,0 +1,180 @@
+// One frame of the editor: the panels laid out around the canvas, the menu bar, the status bar,
+// the window title (editor_app.hpp).
+#include <imgui.h>
+#include <imgui_impl_sdl.h>
+#include <imgui_impl_sdlrenderer.h>
+
+#include <algorithm>
+
+#include "editor/editor_app.hpp"
+#include "realtime/clock.hpp"
+
+namespace vimg::editor {
+namespace {
+constexpr float kToolsWidth = 210.0f;
+constexpr float kPropertiesWidth = 330.0f;
+constexpr float kStatusHeight = 26.0f;
+constexpr float kScopeHeight = 150.0f;
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                         ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                         ImGuiWindowFlags_NoBringToFrontOnFocus;
+}  // namespace
+
+void EditorApp::set_play_mode(bool on) {
+  if (on == playback_.on()) return;
+  if (on) canvas_.cancel_interaction();
+  playback_.set_on(on, session_.editor().image());
+}
+
+void EditorApp::frame() {
+  ImGui_ImplSDLRenderer_NewFrame();
+  ImGui_ImplSDL2_NewFrame();
+  ImGui::NewFrame();
+
+  draw_menu_bar();
+  if (layout_.enabled()) {
+    int wx = 0, wy = 0, ww = 0, wh = 0;
+    SDL_GetWindowPosition(window_, &wx, &wy);
+    SDL_GetWindowSize(window_, &ww, &wh);
+    layout_.print("window", static_cast<float>(wx), static_cast<float>(wy), static_cast<float>(ww),
+                  static_cast<float>(wh));
+  }
+  const ImGuiIO& io = ImGui::GetIO();
+  const float top = ImGui::GetFrameHeight();
+  const float W = io.DisplaySize.x;
+  const float H = io.DisplaySize.y;
+  const bool playing = playback_.on();
+  const float scope_h = playing ? kScopeHeight : 0.0f;
+  const float canvas_w = std::max(50.0f, W - kToolsWidth - kPropertiesWidth);
+  const float canvas_h = std::max(50.0f, H - top - kStatusHeight - scope_h);
+
+  // Tools panel: play, the drawing tools, the library.
+  ImGui::SetNextWindowPos(ImVec2(0, top));
+  ImGui::SetNextWindowSize(ImVec2(kToolsWidth, H - top - kStatusHeight));
+  ImGui::Begin("Tools", nullptr, kPanelFlags);
+  if (playback_.draw_controls()) set_play_mode(!playing);
+  ImGui::Separator();
+  canvas_.draw_tool_choice(playing);
+  ImGui::Separator();
+  if (auto path = library_.draw(playing)) request(PendingAction::open_file, *path);
+  ImGui::End();
+
+  canvas_.draw(kToolsWidth, top, canvas_w, canvas_h);
+  if (playback_.on()) playback_.draw_scope(kToolsWidth, top + canvas_h, canvas_w, scope_h);
+  const float props_h = (H - top - kStatusHeight) * 0.62f;
+  properties_.draw(kToolsWidth + canvas_w, top, kPropertiesWidth, props_h);
+  problems_.draw(kToolsWidth + canvas_w, top + props_h, kPropertiesWidth, H - top - kStatusHeight - props_h,
+                 session_.load_diagnostics());
+  draw_status_bar(W, H);
+
+  draw_dialogs();
+  any_popup_open_ = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
+
+  ImGui::Render();
+  SDL_SetRenderDrawColor(renderer_, 30, 30, 34, 255);
+  SDL_RenderClear(renderer_);
+  ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
+  SDL_RenderPresent(renderer_);
+
+  const DocumentEditor& doc = session_.editor();
+  playback_.follow(doc.image(), doc.change_count());
+  if (options_.benchmark_frames == 0) {
+    const double now = monotonic_s();
+    if (auto status = session_.autosave_if_due(now)) notices_.status = *status;
+    problems_.refresh(doc, session_.path().empty() ? "untitled.vimg" : session_.path(), now);
+  }
+  update_title();
+}
+
+void EditorApp::draw_status_bar(float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(0, h - kStatusHeight));
+  ImGui::SetNextWindowSize(ImVec2(w, kStatusHeight));
+  ImGui::Begin("##status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus);
+  const Viewport& view = canvas_.view();
+  ImGui::Text("%s | %s%s | zoom %.0f%% (%.2f px/mm) | grid %s, snap %s | %zu elements | %s",
+              playback_.on() ? "PLAYING" : "DRAWING", session_.editor().dirty() ? "* " : "",
+              session_.display_name().c_str(), view.zoom() * 100.0, view.px_per_mm(),
+              canvas_.show_grid() ? "on" : "off", canvas_.snap() ? "on" : "off",
+              session_.editor().image().children.size(), notices_.status.c_str());
+  ImGui::End();
+}
+
+void EditorApp::draw_menu_bar() {
+  if (!ImGui::BeginMainMenuBar()) return;
+  DocumentEditor& doc = session_.editor();
+  if (ImGui::BeginMenu("File")) {
+    if (ImGui::MenuItem("New", "Ctrl+N")) request(PendingAction::new_document);
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) prompt_path(PathPrompt::open, "");
+    if (ImGui::BeginMenu("Open Recent", !session_.recent().paths().empty())) {
+      for (const std::string& p : session_.recent().paths()) {
+        if (ImGui::MenuItem(p.c_str())) request(PendingAction::open_file, p);
+      }
+      ImGui::EndMenu();
+    }
+    if (ImGui::MenuItem("Save", "Ctrl+S")) save();
+    if (ImGui::MenuItem("Save As (.vimg or .png)...", "Ctrl+Shift+S")) prompt_path(PathPrompt::save_as, session_.path());
+    ImGui::Separator();
+    if (ImGui::MenuItem("Quit", "Ctrl+Q")) request(PendingAction::quit);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Edit")) {
+    const bool editing = !playback_.on();
+    const bool any = !doc.selection().empty();
+    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, editing && doc.can_undo())) doc.undo();
+    if (ImGui::MenuItem("Redo", "Ctrl+Y", false, editing && doc.can_redo())) doc.redo();
+    ImGui::Separator();
+    if (ImGui::MenuItem("Cut", "Ctrl+X", false, editing && any)) {
+      doc.copy_selection();
+      doc.delete_selection();
+    }
+    if (ImGui::MenuItem("Copy", "Ctrl+C", false, any)) doc.copy_selection();
+    if (ImGui::MenuItem("Paste", "Ctrl+V", false, editing && doc.can_paste())) doc.paste(5.0);
+    if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, editing && any)) doc.duplicate_selection(5.0);
+    if (ImGui::MenuItem("Delete", "Del", false, editing && any)) doc.delete_selection();
+    if (ImGui::MenuItem("Select All", "Ctrl+A", false, editing)) doc.select_all();
+    ImGui::Separator();
+    if (ImGui::MenuItem("Group", "Ctrl+G", false, editing && any)) doc.group_selection();
+    if (ImGui::MenuItem("Ungroup", "Ctrl+Shift+G", false, editing && any)) doc.ungroup_selection();
+    ImGui::Separator();
+    if (ImGui::MenuItem("Bring Forward", "PgUp", false, editing && any)) doc.raise_selection();
+    if (ImGui::MenuItem("Send Backward", "PgDn", false, editing && any)) doc.lower_selection();
+    if (ImGui::MenuItem("Bring to Front", "Home", false, editing && any)) doc.bring_selection_to_front();
+    if (ImGui::MenuItem("Send to Back", "End", false, editing && any)) doc.send_selection_to_back();
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("View")) {
+    if (ImGui::MenuItem("Actual Size", "Ctrl+0")) canvas_.actual_size();
+    if (ImGui::MenuItem("Zoom In", "Ctrl+=")) canvas_.zoom_by(1.25);
+    if (ImGui::MenuItem("Zoom Out", "Ctrl+-")) canvas_.zoom_by(0.8);
+    ImGui::MenuItem("Grid", "G", &canvas_.show_grid());
+    ImGui::MenuItem("Snap to Grid", "S", &canvas_.snap());
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Mode")) {
+    const bool playing = playback_.on();
+    if (ImGui::MenuItem("Drawing", "F5", !playing)) set_play_mode(false);
+    if (ImGui::MenuItem("Playing", "F5", playing)) set_play_mode(true);
+    if (playback_.has_session() && ImGui::MenuItem("Record Gesture", nullptr, playback_.recording(), playing)) {
+      playback_.toggle_recording();
+    }
+    if (ImGui::MenuItem("Save Gesture (.csv)...", nullptr, false, playback_.can_save_gesture())) {
+      prompt_path(PathPrompt::save_gesture, "gesture.csv");
+    }
+    ImGui::EndMenu();
+  }
+  ImGui::TextDisabled("| %s%s", doc.dirty() ? "* " : "", session_.path().empty() ? "untitled" : session_.path().c_str());
+  ImGui::EndMainMenuBar();
+}
+
+void EditorApp::update_title() {
+  const std::string title = std::string(session_.editor().dirty() ? "*" : "") + session_.display_name() +
+                            " - vimg-editor" + (playback_.on() ? " [playing]" : "");
+  if (title != last_title_) {
+    SDL_SetWindowTitle(window_, title.c_str());
+    last_title_ = title;
+  }
+}
+
+}  // namespace vimg::editor

@@ -1,0 +1,37 @@
+#pragma once
+// The inspector's properties panel: every attribute of the single selected element with its unit
+// and valid range, or, with nothing selected, the document's size, finger parameters and meta.
+// Each widget interaction is one undo step (a gesture of the DocumentEditor). GUI thread.
+#include <string>
+
+#include "editor/core/document_editor.hpp"
+#include "editor/notices.hpp"
+
+namespace vimg::editor {
+
+class LayoutLog;
+
+class PropertiesPanel {
+ public:
+  PropertiesPanel(DocumentEditor& doc, Notices& notices, LayoutLog& layout);
+  void draw(float x, float y, float w, float h);
+
+ private:
+  void draw_element(const std::string& id);
+  void draw_document();
+  // Brackets the last widget's interaction into one undo step.
+  void track_widget_gesture();
+
+  DocumentEditor& doc_;
+  Notices& notices_;
+  LayoutLog& layout_;
+  // Text being typed, kept while its widget is active.
+  char id_buffer_[128] = {};
+  std::string id_for_;
+  char name_buffer_[256] = {};
+  std::string name_for_;
+  char meta_buffers_[4][512] = {};
+  std::string meta_shown_[4];
+};
+
+}  // namespace vimg::editor
