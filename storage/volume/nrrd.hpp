@@ -1,14 +1,14 @@
 #pragma once
-// NRRD volumes (teem's "nearly raw raster data"), the scientific-visualization format for
-// scalar and vector grids. A strict reader of what the volume backend needs:
-//   - magic NRRD0001..NRRD0005, then `field: value` lines, `#` comments and `key:=value` pairs,
-//     ended by an empty line and followed by the attached data;
-//   - dimension 3 (a scalar grid) or 4 with a first axis of size 3 (a 3-vector grid);
-//   - types int8..uint64, float, double (converted to float); raw, gzip and ascii encodings;
-//   - axis-aligned geometry from `spacings` or a diagonal `space directions`, `space origin`;
-//     positions in millimetres.
-// Anything else (detached data, unknown fields, skewed axes, short or long data) is an error
-// naming the file and, for header problems, the line.
+// NRRD volumes as a scene needs them: a scalar grid or a 3-vector grid. The file is read by teem
+// through storage/volume/nrrd_volume.hpp (every type, endianness, raw/gzip/bzip2/ASCII/hex
+// encoding, attached or detached data, with vibroimage's limits and confined data files); on top
+// of it this layer asks for the layout a scene needs, naming the field when it is not met:
+//   - dimension 3 (a scalar grid), or 4 with a first axis of 3 components (a 3-vector grid, whose
+//     first axis has a vector kind when it has a kind);
+//   - axis-aligned geometry: `spacings`, or a diagonal `space directions` with positive entries,
+//     in a 3-dimensional space; `space origin`; lengths in millimetres (`space units` and axis
+//     `units` are "mm" or absent);
+//   - finite samples, converted to float.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -19,6 +19,7 @@
 #include "primitives/volume/vector_grid.hpp"
 #include "storage/diagnostic.hpp"
 #include "storage/limits.hpp"
+#include "storage/volume/nrrd_volume.hpp"
 
 namespace vimg {
 
@@ -29,13 +30,15 @@ struct NrrdLoadResult {
   bool ok() const { return scalar.has_value() || vector.has_value(); }
 };
 
-// Parses a whole NRRD file held in memory; `file_name` is used in messages only.
-NrrdLoadResult parse_nrrd(std::string_view bytes, const std::string& file_name);
-NrrdLoadResult load_nrrd_file(const std::filesystem::path& path);
+// Parses a whole NRRD file held in memory; `file_name` is used in messages only. A detached
+// header needs `options.folder` (load_nrrd_file sets it to the header's folder).
+NrrdLoadResult parse_nrrd(std::string_view bytes, const std::string& file_name, const NrrdReadOptions& options = {});
+NrrdLoadResult load_nrrd_file(const std::filesystem::path& path, const NamedFileOptions& named = {});
 
 enum class NrrdEncoding { raw, gzip };
 
-// A NRRD0004 file of float samples, little-endian, with spacings and origin in mm.
+// A NRRD file of float samples written by teem: a 3-dimensional space with space directions,
+// origin and units in mm; the vector grid's first axis has kind "vector".
 std::string write_nrrd(const ScalarGrid& grid, NrrdEncoding encoding, const std::string& content = {});
 std::string write_nrrd(const VectorGrid& grid, NrrdEncoding encoding, const std::string& content = {});
 

@@ -355,7 +355,11 @@ VolumeSceneLoadResult load_volume_scene_file(const std::filesystem::path& path, 
       list.error(ref.source_line, "cannot load data '" + escape_input(ref.id) + "' from " + data.path.string());
       continue;
     }
-    NrrdLoadResult nrrd = parse_nrrd(*data.read.bytes, data.path.string());
+    NrrdReadOptions nrrd_options;  // a detached header's data file: inside the header's folder too
+    nrrd_options.folder = data.path.parent_path();
+    nrrd_options.named = named;
+    nrrd_options.what_folder = "the folder of " + data.path.filename().string();
+    NrrdLoadResult nrrd = parse_nrrd(*data.read.bytes, data.path.string(), nrrd_options);
     for (auto& d : nrrd.diagnostics) data_diagnostics.push_back(std::move(d));
     if (!nrrd.ok()) {
       list.error(ref.source_line, "cannot load data '" + escape_input(ref.id) + "' from " + data.path.string());

@@ -75,18 +75,24 @@ TEST(Nrrd, HeaderErrorsNameFileAndLine) {
   const std::vector<BadHeader> cases = {
       {"P5\n", "bad.nrrd:1: error: not a NRRD file"},
       {"NRRD0004\ntype: uchar\ndimension: 3\nfrobnicate: 3\n" + ok_tail, "bad.nrrd:4: error: unknown field 'frobnicate'"},
-      {"NRRD0004\ntype: complex\ndimension: 3\n" + ok_tail, "bad.nrrd:2: error: unsupported type"},
-      {"NRRD0004\ntype: uchar\ndimension: 2\n" + ok_tail, "bad.nrrd:3: error: dimension must be 3"},
-      {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 0 1\nencoding: raw\n\n", "bad.nrrd:4: error: size '0'"},
-      {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 1 1\nencoding: bzip2\n\n", "bad.nrrd:5: error: unsupported encoding"},
-      {"NRRD0004\ntype: uchar\ndimension: 3\ndata file: x.raw\n" + ok_tail, "bad.nrrd:4: error: detached data"},
-      {"NRRD0004\ntype: uchar\ndimension: 3\nspace directions: (1,0.1,0) (0,1,0) (0,0,1)\n" + ok_tail, "bad.nrrd:4: error: space directions must be axis-aligned"},
+      {"NRRD0004\ntype: complex\ndimension: 3\n" + ok_tail, "bad.nrrd:2: error: field 'type': couldn't parse type \"complex\""},
+      {"NRRD0004\ntype: uchar\ndimension: 2\nsizes: 1 1\nencoding: raw\n\n\x01", "bad.nrrd:3: error: dimension must be 3"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 0 1\nencoding: raw\n\n", "bad.nrrd:4: error: field 'sizes': axis 1 size is zero"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 1 1\nencoding: bzip3\n\n", "bad.nrrd:5: error: field 'encoding': couldn't parse encoding"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\ndata file: x.raw\nsizes: 1 1 1\nencoding: raw\n", "bad.nrrd:4: error: field 'data file' = 'x.raw': a detached header must be read from a file"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\ndata file: LIST\nsizes: 1 1 1\nencoding: raw\n", "bad.nrrd:4: error: field 'data file': only a single data file is supported"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nspace dimension: 3\nspace directions: (1,0.1,0) (0,1,0) (0,0,1)\n" + ok_tail, "bad.nrrd:5: error: space directions must be axis-aligned"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nspace dimension: 3\nspace directions: (1,0,0) (0,-1,0) (0,0,1)\n" + ok_tail, "bad.nrrd:5: error: space directions must be positive"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nspace dimension: 3\nspace units: \"cm\" \"mm\" \"mm\"\n" + ok_tail, "bad.nrrd:5: error: space units must be millimetres"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nspace dimension: 2\n" + ok_tail, "bad.nrrd:4: error: the space must have 3 dimensions, got 2"},
       {"NRRD0004\ntype: uchar\ndimension: 3\ntype: float\n" + ok_tail, "bad.nrrd:4: error: field 'type' given twice"},
       {"NRRD0004\ntype: uchar\ndimension: 3\nno colon here\n" + ok_tail, "bad.nrrd:4: error: expected 'field: value'"},
-      {"NRRD0004\ntype: float\ndimension: 3\n" + ok_tail, "bad.nrrd: error: missing field 'endian'"},
+      {"NRRD0004\ntype: float\ndimension: 3\n" + ok_tail, "bad.nrrd: error: type (float) and encoding (raw) require endian info"},
       {"NRRD0004\ntype: uchar\ndimension: 4\nsizes: 2 1 1 1\nencoding: raw\n\n\x01\x02", "bad.nrrd:4: error: a 4-dimensional volume must have 3"},
+      {"NRRD0004\ntype: uchar\ndimension: 4\nkinds: domain domain domain domain\nsizes: 3 1 1 1\nencoding: raw\n\n\x01\x02\x03", "bad.nrrd:4: error: the first axis of a vector volume must have a vector kind, got 'domain'"},
       {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 1 1\nencoding: raw\n", "bad.nrrd:5: error: the header does not end"},
-      {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 100000 100000 100000\nencoding: raw\n\n", "bad.nrrd:4: error: volume has more than"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 100000 100000 100000\nencoding: raw\n\n", "bad.nrrd:4: error: the volume has more than"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nline skip: 2\nsizes: 1 1 1\nencoding: raw\n\n\x01", "bad.nrrd:8: error: hit EOF skipping line 1 of 2"},
   };
   for (const auto& c : cases) {
     const NrrdLoadResult r = parse_nrrd(c.text, "bad.nrrd");
@@ -106,7 +112,11 @@ TEST(Nrrd, DataErrors) {
 TEST(Nrrd, HugeDeclaredSizesWithLittleDataFailBeforeAllocating) {
   const std::string head = "NRRD0004\ntype: float\ndimension: 3\nsizes: 512 512 512\nendian: little\nencoding: ";
   EXPECT_EQ(first_message(parse_nrrd(head + "gzip\n\nxyz", "h.nrrd")),
-            "h.nrrd:8: error: gzip data is truncated (too short for the 536870912 bytes the header needs)");
+            "h.nrrd:8: error: gzip data is corrupt (incorrect header check) (0 of the 536870912 bytes the header declares)");
+  EXPECT_EQ(first_message(parse_nrrd(head + "bzip2\n\nxyz", "h.nrrd")),
+            "h.nrrd:8: error: bzip2 data is corrupt (error -5) (0 of the 536870912 bytes the header declares)");
+  EXPECT_EQ(first_message(parse_nrrd(head + "hex\n\n00ff", "h.nrrd")),
+            "h.nrrd:8: error: data holds fewer than the 1073741824 hex digits the header needs");
   EXPECT_EQ(first_message(parse_nrrd(head + "ascii\n\n1 2 3", "h.nrrd")),
             "h.nrrd:8: error: data holds fewer than the 134217728 samples the header needs");
 }
