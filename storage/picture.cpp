@@ -99,6 +99,8 @@ class Painter {
   double scale() const { return scale_; }
   PictureWork& work() { return work_; }
   std::uint8_t* row(int py) { return raster_.pixel(0, py); }
+  // Working memory reused from one shape to the next.
+  std::vector<double>& scratch() { return scratch_; }
 
   // Blends colour c at opacity a (0..1) into the pixel at p, in integers: the opacity in 1/256
   // steps, each channel p + round((c - p) a) (exactly c at a = 1).
@@ -119,6 +121,7 @@ class Painter {
   PictureWork& work_;
   int row_begin_ = 0;
   int row_end_;
+  std::vector<double> scratch_;
 };
 
 template <class Edge, class Alpha>
@@ -373,7 +376,7 @@ void draw_ellipse(Painter& painter, const Surface& s) {
 struct Edge {
   double x0, y0, x1, y1;
   double slope;  // dx / dy
-  float dir;
+  double dir;
 };
 
 // Clips one polygon edge to the canvas rows [0, height] and columns [0, width]: what lies left of
@@ -383,11 +386,11 @@ struct Edge {
 void add_edge(std::vector<Edge>& edges, long double ax, long double ay, long double bx, long double by, int width,
               int row_begin, int row_end, bool& to_right) {
   if (ay == by) return;
-  float dir = 1.0f;
+  double dir = 1.0;
   if (ay > by) {
     std::swap(ax, bx);
     std::swap(ay, by);
-    dir = -1.0f;
+    dir = -1.0;
   }
   const long double top = std::max(ay, static_cast<long double>(row_begin));
   const long double bottom = std::min(by, static_cast<long double>(row_end));
@@ -427,14 +430,15 @@ void add_edge(std::vector<Edge>& edges, long double ax, long double ay, long dou
 
 // Adds the signed area of an edge piece within one pixel row to the accumulation buffer: the
 // coverage of pixel c is the running sum of acc[0..c] (the piece lies within [y0, y1] of height
-// at most 1, x in [0, width]).
-void accumulate(std::vector<double>& acc, double xa, double ya, double xb, double yb, double dir) {
+// at most 1, x >= 0 and within the row's cells).
+void accumulate(double* acc, double xa, double ya, double xb, double yb, double dir) {
   const double d = (yb - ya) * dir;
   const double x0 = std::min(xa, xb), x1 = std::max(xa, xb);
-  // x >= 0 here: the integer conversion is the floor (cheaper than std::floor without SSE4.1).
-  const auto x0i = static_cast<std::size_t>(x0);
+  // x >= 0 here: the integer conversion is the floor (cheaper than std::floor without SSE4.1;
+  // a signed conversion is one instruction, an unsigned one is not).
+  const auto x0i = static_cast<std::ptrdiff_t>(x0);
   const double x0floor = static_cast<double>(x0i);
-  auto x1i = static_cast<std::size_t>(x1);
+  auto x1i = static_cast<std::ptrdiff_t>(x1);
   if (static_cast<double>(x1i) < x1) ++x1i;
   const double x1ceil = static_cast<double>(x1i);
   if (x1i <= x0i + 1) {
@@ -454,7 +458,7 @@ void accumulate(std::vector<double>& acc, double xa, double ya, double xb, doubl
   } else {
     const double a1 = inv * (1.5 - x0f);
     acc[x0i + 1] += d * (a1 - a0);
-    for (std::size_t xi = x0i + 2; xi + 1 < x1i; ++xi) acc[xi] += d * inv;
+    for (std::ptrdiff_t xi = x0i + 2; xi + 1 < x1i; ++xi) acc[xi] += d * inv;
     const double a2 = a1 + static_cast<double>(x1i - x0i - 3) * inv;
     acc[x1i - 1] += d * (1.0 - a2 - am);
   }
@@ -477,51 +481,70 @@ void draw_polygon(Painter& painter, const Surface& s) {
              to_right);
   }
   if (edges.empty()) return;
-  // Edges sorted once by their top; the active list holds those crossing the current row.
-  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.y0 < b.y0; });
-  double min_x = width, max_x = 0.0, max_y = 0.0;
+  double min_x = width, max_x = 0.0, min_y = INFINITY, max_y = 0.0;
   for (const Edge& e : edges) {
     min_x = std::min({min_x, e.x0, e.x1});
     max_x = std::max({max_x, e.x0, e.x1});
+    min_y = std::min(min_y, e.y0);
     max_y = std::max(max_y, e.y1);
   }
   const int c0 = static_cast<int>(std::floor(min_x));
   const int c1 = to_right ? width - 1 : std::min(width - 1, static_cast<int>(std::ceil(max_x)));
-  if (c0 > c1) return;
-  const StripeAlpha alpha(s, painter.scale(), c0, c1);
-  std::vector<double> acc(static_cast<std::size_t>(width) + 2, 0.0);
-  std::vector<std::size_t> active;
-  std::size_t next = 0;
-  double first_end = INFINITY;  // the lowest bottom of the active edges: none ends before it
-  const int row0 = static_cast<int>(std::floor(edges.front().y0));
+  const int row0 = std::max(painter.row_begin(), static_cast<int>(std::floor(min_y)));
   const int row1 = std::min(painter.row_end() - 1, static_cast<int>(std::ceil(max_y)));
+  if (c0 > c1 || row0 > row1) return;
+  // Each edge adds its area to the rows it crosses, edge by edge (its data is read once per
+  // band, whatever the number of edges crossing a row); the accumulation rows span the edges'
+  // columns, shifted by c0, with room for the cell right of the rightmost edge.
+  const std::size_t stride = static_cast<std::size_t>(std::ceil(max_x) - c0) + 2;
+  std::vector<double>& acc = painter.scratch();
+  acc.assign(stride * static_cast<std::size_t>(row1 - row0 + 1), 0.0);
+  const double shift = c0;
+  for (const Edge& e : edges) {
+    const int first = std::max(row0, static_cast<int>(std::floor(e.y0)));
+    const int last = std::min(row1, static_cast<int>(std::ceil(e.y1)) - 1);
+    // The piece's ends are within [0, width] (add_edge), so is every point between them; the
+    // clamp only absorbs rounding.
+    const auto x_at = [&](double y) { return std::clamp(e.x0 + (y - e.y0) * e.slope - shift, 0.0, max_x - shift); };
+    const auto piece = [&](int py) {
+      const double ya = std::max(e.y0, static_cast<double>(py)), yb = std::min(e.y1, py + 1.0);
+      if (ya < yb) accumulate(acc.data() + stride * static_cast<std::size_t>(py - row0), x_at(ya), ya, x_at(yb), yb, e.dir);
+    };
+    // Rows the piece crosses whole, the common case of long edges: x steps by the slope, and a
+    // step within one cell (steep edges) is two additions.
+    const int full_first = std::max(first, static_cast<int>(std::ceil(e.y0)));
+    const int full_last = std::min(last, static_cast<int>(std::floor(e.y1)) - 1);
+    if (full_first > full_last) {
+      for (int py = first; py <= last; ++py) piece(py);
+    } else {
+      for (int py = first; py < full_first; ++py) piece(py);
+      double x = x_at(full_first);
+      for (int py = full_first; py <= full_last; ++py) {
+        const double next = std::clamp(x + e.slope, 0.0, max_x - shift);
+        double* cells = acc.data() + stride * static_cast<std::size_t>(py - row0);
+        const auto i = static_cast<std::ptrdiff_t>(std::min(x, next));
+        if (std::max(x, next) <= static_cast<double>(i + 1)) {
+          const double xmf = 0.5 * (x + next) - static_cast<double>(i);
+          cells[i] += e.dir - e.dir * xmf;
+          cells[i + 1] += e.dir * xmf;
+        } else {
+          accumulate(cells, x, py, next, py + 1.0, e.dir);
+        }
+        x = next;
+      }
+      for (int py = full_last + 1; py <= last; ++py) piece(py);
+    }
+    painter.work().edge_steps += static_cast<std::uint64_t>(std::max(0, last - first + 1));
+  }
+  const StripeAlpha alpha(s, painter.scale(), c0, c1);
+  const int last_acc = c0 + static_cast<int>(stride) - 1;
   for (int py = row0; py <= row1; ++py) {
-    const double top = py, bottom = py + 1.0;
-    while (next < edges.size() && edges[next].y0 < bottom) {
-      first_end = std::min(first_end, edges[next].y1);
-      active.push_back(next++);
-    }
-    if (first_end <= top) {
-      std::erase_if(active, [&](std::size_t i) { return edges[i].y1 <= top; });
-      first_end = INFINITY;
-      for (const std::size_t i : active) first_end = std::min(first_end, edges[i].y1);
-    }
-    if (active.empty()) continue;
-    for (const std::size_t i : active) {
-      const Edge& e = edges[i];
-      ++painter.work().edge_steps;
-      const double ya = std::max(e.y0, top), yb = std::min(e.y1, bottom);
-      if (!(ya < yb)) continue;
-      const double xa = std::clamp(e.x0 + (ya - e.y0) * e.slope, 0.0, static_cast<double>(width));
-      const double xb = std::clamp(e.x0 + (yb - e.y0) * e.slope, 0.0, static_cast<double>(width));
-      accumulate(acc, xa, ya, xb, yb, e.dir);
-    }
+    const double* row_acc = acc.data() + stride * static_cast<std::size_t>(py - row0);
     std::uint8_t* row = painter.row(py);
     painter.work().pixels += static_cast<std::uint64_t>(c1 - c0 + 1);
     double winding = 0.0;
     for (int px = c0; px <= c1; ++px) {
-      winding += acc[static_cast<std::size_t>(px)];
-      acc[static_cast<std::size_t>(px)] = 0.0;
+      if (px <= last_acc) winding += row_acc[px - c0];
       // Even-odd: the coverage folds the winding area into [0, 1].
       double c = std::abs(winding);
       if (c > 1.0) {
@@ -530,7 +553,6 @@ void draw_polygon(Painter& painter, const Surface& s) {
       }
       if (c > 1e-6) Painter::blend(row + 3 * px, palette::kSurface, static_cast<float>(c) * alpha(px));
     }
-    std::fill(acc.begin() + c1 + 1, acc.end(), 0.0);
   }
 }
 
