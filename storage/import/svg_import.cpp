@@ -160,7 +160,8 @@ class SvgImporter {
   Style cascade(const XMLElement& e, const Style& parent) {
     static constexpr const char* kProperties[] = {"fill",         "stroke",           "stroke-width", "fill-rule",
                                                   "display",      "visibility",       "fill-opacity", "stroke-opacity",
-                                                  "opacity",      "stroke-dasharray"};
+                                                  "opacity",      "stroke-dasharray", "clip-path",    "mask",
+                                                  "filter",       "marker-start",     "marker-mid",   "marker-end"};
     std::vector<std::pair<std::string, std::string>> presentation;
     for (const char* name : kProperties) {
       if (const char* v = e.Attribute(name)) presentation.emplace_back(name, v);

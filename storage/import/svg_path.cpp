@@ -106,7 +106,10 @@ struct Parser {
   bool cubic_to(Vec2 c1, Vec2 c2, Vec2 p) { return add({PathSegment::Kind::cubic, c1, c2, p}); }
 
   bool number(double& v) {
-    if (!scan_number(d, pos, v, true)) return fail("a number was expected");
+    if (!scan_number(d, pos, v, true)) {
+      skip_comma_wsp(d, pos);
+      return fail("a number was expected");
+    }
     return true;
   }
 
