@@ -1,9 +1,11 @@
-// `vimg info FILE` (spec section 4): size, counts per primitive kind, groups, meta.
+// `vimg info FILE [--actuator P]` (spec section 4): size, counts per primitive kind, groups, meta;
+// with an actuator profile, each primitive's frequency at fullSpeed and the actuator's response there.
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "cli/command.hpp"
+#include "cli/felt_report.hpp"
 #include "storage/image_io.hpp"
 #include "storage/image_summary.hpp"
 #include "storage/number_text.hpp"
@@ -16,7 +18,12 @@ void print_field(const char* label, const std::optional<std::string>& value) {
   if (value) std::printf("%-13s %s\n", label, value->c_str());
 }
 
-int run_info(const std::string& file) {
+int run_info(const std::string& file, const std::string& actuator) {
+  std::unique_ptr<FeltAnalysis> felt;
+  if (!actuator.empty()) {
+    felt = load_felt_analysis(actuator);
+    if (!felt) return kExitFailure;
+  }
   const LoadResult loaded = load_image_file(file);
   for (const Diagnostic& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
   if (!loaded.ok()) return kExitFailure;
@@ -49,6 +56,7 @@ int run_info(const std::string& file) {
   } else {
     std::printf("%-13s none\n", "meta:");
   }
+  if (felt) print_felt_table(image, *felt);
   return kExitOk;
 }
 
@@ -57,8 +65,12 @@ int run_info(const std::string& file) {
 void add_info_command(CLI::App& vimg, int& exit_code) {
   CLI::App* sub = vimg.add_subcommand("info", "summary: size, primitives per kind, groups, meta");
   auto file = std::make_shared<std::string>();
+  auto actuator = std::make_shared<std::string>();
   sub->add_option("FILE", *file, "a .vimg or .png image")->required();
-  sub->callback([file, &exit_code] { exit_code = run_info(*file); });
+  sub->add_option("--actuator", *actuator,
+                  "actuator profile (assets/profiles/*.xml): list each primitive's frequency at fullSpeed and the "
+                  "actuator's response there in dB re its peak");
+  sub->callback([file, actuator, &exit_code] { exit_code = run_info(*file, *actuator); });
 }
 
 }  // namespace vimg::cli

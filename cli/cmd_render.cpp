@@ -1,4 +1,5 @@
-// `vimg render IMAGE --gesture G.csv --out OUT.(wav|csv) [--rate HZ]` (spec section 4).
+// `vimg render IMAGE --gesture G.csv --out OUT.(wav|csv) [--rate HZ] [--actuator P]
+//  [--signal drive|acceleration] [--equalize]` (spec section 4, docs/actuators.md).
 #include <algorithm>
 #include <cmath>
 #include <csignal>
@@ -37,6 +38,8 @@ struct RenderArgs {
   // Options of the hardware layer (actuator profile) go in the block marked below.
   std::string actuator;        // profile file; empty: the ideal actuator
   std::string register_trace;  // DRV2605L register traffic CSV; needs a drv2605l profile
+  std::string signal = "drive";  // drive | acceleration (the modelled acceleration of the actuator)
+  bool equalize = false;         // shape the drive to the actuator's response
 };
 
 // The checks CLI11 cannot express; returns an exit code on a usage error.
@@ -45,6 +48,8 @@ std::optional<int> check_render_args(const RenderArgs& a) {
   if (ext != ".wav" && ext != ".csv") return usage_error("vimg render", "--out must end in .wav or .csv: '" + a.out + "'");
   if (!a.register_trace.empty() && a.actuator.empty())
     return usage_error("vimg render", "--register-trace needs --actuator with a drv2605l profile");
+  if (!a.register_trace.empty() && a.signal == "acceleration")
+    return usage_error("vimg render", "--register-trace records the drive: it does not go with --signal acceleration");
   return std::nullopt;
 }
 
@@ -82,10 +87,16 @@ int run_render(const RenderArgs& a) {
   if (lower_extension(a.out) == ".wav") {
     sink = std::make_unique<WavSink>(a.out);
   } else {
-    sink = std::make_unique<CsvSink>(a.out);
+    sink = std::make_unique<CsvSink>(a.out, a.signal);
   }
   OfflineRenderOptions options;
   options.sample_rate_hz = static_cast<double>(a.rate_hz);
+  const OutputSignal signal = a.signal == "acceleration" ? OutputSignal::acceleration : OutputSignal::drive;
+  ActuatorChain chain(profile.response, options.sample_rate_hz, signal, a.equalize);
+  if (a.equalize && profile.response.model == ResponseModel::erm) {
+    std::fprintf(stderr, "vimg render: warning: --equalize does nothing for an erm profile (a filter cannot reshape a motor's spin-up)\n");
+  }
+  if (!chain.is_identity()) options.actuator = &chain;
   // SIGINT/SIGTERM only set a flag; the render stops at the next block and the output is abandoned.
   const SignalRestScope signals;
   options.should_stop = [] { return rest_requested(); };
@@ -123,14 +134,21 @@ int run_render(const RenderArgs& a) {
 }  // namespace
 
 void add_render_command(CLI::App& vimg, int& exit_code) {
-  CLI::App* sub = vimg.add_subcommand("render", "render the drive signal of a gesture over an image (mono float WAV or time_s,drive CSV)");
+  CLI::App* sub = vimg.add_subcommand("render", "render the drive (or the modelled acceleration) of a gesture over an image (mono float WAV or time_s,drive CSV)");
   auto a = std::make_shared<RenderArgs>();
   sub->add_option("IMAGE", a->image, "a .vimg or .png image")->required();
   sub->add_option("--gesture", a->gesture, "the gesture CSV (time_s,finger,x_mm,y_mm,pressure,phase)")->required();
-  sub->add_option("--out", a->out, "OUT.wav (mono 32-bit float) or OUT.csv (time_s,drive), written atomically")->required();
+  sub->add_option("--out", a->out, "OUT.wav (mono 32-bit float) or OUT.csv (time_s,drive or time_s,acceleration), written atomically")->required();
   sub->add_option("--rate", a->rate_hz, "output sample rate in Hz")->check(CLI::Range(1, 48000));
   sub->add_option("--actuator", a->actuator, "actuator profile (assets/profiles/*.xml); default: ideal, 175 Hz carrier");
   sub->add_option("--register-trace", a->register_trace, "DRV2605L register traffic as CSV (needs a drv2605l --actuator)");
+  sub->add_option("--signal", a->signal,
+                  "drive (default: what the actuator is given) or acceleration (what the actuator's response model makes "
+                  "of it; the ideal actuator gives the drive unchanged); names the CSV column")
+      ->check(CLI::IsMember({"drive", "acceleration"}));
+  sub->add_flag("--equalize", a->equalize,
+                "shape the drive so that the modelled acceleration follows the design across the actuator's band "
+                "(attenuates the resonance; |drive| stays <= 1)");
   sub->footer("Limits (docs/limits.md): a gesture of at most " + std::to_string(kMaxGestureRows) + " rows, " +
               std::to_string(static_cast<int>(kMaxGestureDurationS)) + " s from time 0 and " +
               std::to_string(kMaxCsvFileBytes >> 20) + " MiB; an image of at most " + std::to_string(kMaxImageFileBytes >> 20) +

@@ -1,10 +1,12 @@
-// `vimg validate FILE...` (spec section 4): checks .vimg and .png files.
+// `vimg validate FILE... [--actuator P]` (spec section 4): checks .vimg and .png files; with an
+// actuator profile, also warns about textures the actuator will barely render (docs/actuators.md).
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "cli/command.hpp"
+#include "cli/felt_report.hpp"
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
 
@@ -12,11 +14,26 @@ namespace vimg::cli {
 
 namespace {
 
-int run_validate(const std::vector<std::string>& files) {
+struct ValidateArgs {
+  std::vector<std::string> files;
+  std::string actuator;  // profile; empty: no check of the feel
+};
+
+int run_validate(const ValidateArgs& a) {
+  std::unique_ptr<FeltAnalysis> felt;
+  if (!a.actuator.empty()) {
+    felt = load_felt_analysis(a.actuator);
+    if (!felt) return kExitFailure;
+  }
   bool all_valid = true;
-  for (const std::string& arg : files) {
+  for (const std::string& arg : a.files) {
     const LoadResult result = load_image_file(arg);
     for (const Diagnostic& d : result.diagnostics) std::printf("%s\n", d.to_string().c_str());
+    if (result.ok() && felt) {
+      DiagnosticList warnings(arg, DiagnosticList::Order::by_line);
+      add_felt_warnings(*result.image, *felt, warnings);
+      for (const Diagnostic& d : warnings.take()) std::printf("%s\n", d.to_string().c_str());
+    }
     if (result.ok()) {
       std::printf("%s: ok\n", arg.c_str());
     } else {
@@ -31,13 +48,16 @@ int run_validate(const std::vector<std::string>& files) {
 
 void add_validate_command(CLI::App& vimg, int& exit_code) {
   CLI::App* sub = vimg.add_subcommand("validate", "check .vimg and .png images; exit 1 if any is invalid");
-  auto files = std::make_shared<std::vector<std::string>>();
-  sub->add_option("FILE", *files, "images to check")->required();
+  auto a = std::make_shared<ValidateArgs>();
+  sub->add_option("FILE", a->files, "images to check")->required();
+  sub->add_option("--actuator", a->actuator,
+                  "actuator profile (assets/profiles/*.xml): also warn about every SURFACE and LINE whose frequency at "
+                  "fullSpeed is more than 10 dB below the actuator's peak response (warnings keep exit 0)");
   sub->footer("Limits (docs/limits.md): " + std::to_string(kMaxImageFileBytes >> 20) + " MiB per file, " +
               std::to_string(kMaxAttributesPerElement) + " attributes per element, nesting " +
               std::to_string(kMaxXmlNestingDepth) + " deep, " + std::to_string(kMaxPolygonPoints) +
               " points per polygon; the first " + std::to_string(kMaxDiagnosticsPerFile) + " problems of a file are listed.");
-  sub->callback([files, &exit_code] { exit_code = run_validate(*files); });
+  sub->callback([a, &exit_code] { exit_code = run_validate(*a); });
 }
 
 }  // namespace vimg::cli

@@ -1,5 +1,6 @@
 #include "hal/actuator_profile.hpp"
 
+#include "storage/diagnostic.hpp"
 #include "storage/read_file.hpp"
 #include "storage/xml_limits.hpp"
 
@@ -78,6 +79,7 @@ class ProfileParser {
       return finish(std::nullopt);
     }
     ActuatorProfile profile;
+    const tinyxml2::XMLElement* response = nullptr;
     if (const char* name = root->Attribute("name")) {
       profile.name = name;
     } else {
@@ -105,10 +107,14 @@ class ProfileParser {
         }
       } else if (name == "driver") {
         parse_driver(*child, profile);
+      } else if (name == "response") {
+        if (response != nullptr) error(child->GetLineNum(), "<actuator> has more than one <response>");
+        response = child;
       } else {
         error(child->GetLineNum(), "unknown element <" + std::string(name) + "> in <actuator>");
       }
     }
+    parse_response(response, profile);
     if (profile.driver == DriverChip::drv2605l && profile.rated_voltage_V <= 0.0) {
       error(root->GetLineNum(), "a drv2605l actuator needs <drive rated_voltage_V=...> above 0");
     }
@@ -116,6 +122,65 @@ class ProfileParser {
   }
 
  private:
+  // <response>, after the whole <actuator> is read (it needs the type and the resonance).
+  void parse_response(const tinyxml2::XMLElement* element, ActuatorProfile& profile) {
+    ResponseParams& r = profile.response;
+    r.resonance_hz = profile.resonance_hz;
+    switch (profile.type) {
+      case ActuatorType::lra: r.model = ResponseModel::lra; break;
+      case ActuatorType::erm: r.model = ResponseModel::erm; break;
+      case ActuatorType::voice_coil: r.model = ResponseModel::voice_coil; break;
+      case ActuatorType::ideal: r.model = ResponseModel::ideal; break;
+    }
+    if (element == nullptr) return;
+    const int line = element->GetLineNum();
+    if (const char* model = element->Attribute("model")) {
+      const std::string_view text = model;
+      if (text == "lra") r.model = ResponseModel::lra;
+      else if (text == "erm") r.model = ResponseModel::erm;
+      else if (text == "voice_coil") r.model = ResponseModel::voice_coil;
+      else if (text == "ideal") r.model = ResponseModel::ideal;
+      else error(line, "<response> model must be lra, erm, voice_coil or ideal, not '" + escape_input(text) + "'");
+    }
+    for (const tinyxml2::XMLAttribute* a = element->FirstAttribute(); a != nullptr; a = a->Next()) {
+      const std::string_view name = a->Name();
+      const bool known = name == "model" || (r.model == ResponseModel::lra && (name == "q" || name == "bandwidth_hz")) ||
+                         (r.model == ResponseModel::erm && (name == "spin_up_ms" || name == "spin_down_ms")) ||
+                         (r.model == ResponseModel::voice_coil && (name == "low_hz" || name == "high_hz"));
+      if (!known) {
+        error(line, "attribute '" + escape_input(name) + "' does not belong to <response model=\"" +
+                        std::string(to_string(r.model)) + "\">");
+      }
+    }
+    switch (r.model) {
+      case ResponseModel::ideal:
+        break;
+      case ResponseModel::lra: {
+        const auto q = number(*element, "q", false, kMinResponseQ, kMaxResponseQ);
+        const auto bandwidth = number(*element, "bandwidth_hz", false, r.resonance_hz / kMaxResponseQ,
+                                      r.resonance_hz / kMinResponseQ);
+        if (element->Attribute("q") != nullptr && element->Attribute("bandwidth_hz") != nullptr) {
+          error(line, "<response> gives q or bandwidth_hz, not both");
+        }
+        if (q) r.q = *q;
+        if (bandwidth) r.q = r.resonance_hz / *bandwidth;
+        break;
+      }
+      case ResponseModel::erm:
+        if (auto ms = number(*element, "spin_up_ms", false, kMinSpinTimeS * 1000.0, kMaxSpinTimeS * 1000.0)) r.spin_up_s = *ms / 1000.0;
+        if (auto ms = number(*element, "spin_down_ms", false, kMinSpinTimeS * 1000.0, kMaxSpinTimeS * 1000.0)) r.spin_down_s = *ms / 1000.0;
+        break;
+      case ResponseModel::voice_coil: {
+        const auto low = number(*element, "low_hz", false, kMinCornerHz, kMaxCornerHz);
+        const auto high = number(*element, "high_hz", false, kMinCornerHz, kMaxCornerHz);
+        if (low) r.low_hz = *low;
+        if (high) r.high_hz = *high;
+        if (r.low_hz >= r.high_hz) error(line, "<response> low_hz must be below high_hz");
+        break;
+      }
+    }
+  }
+
   void parse_driver(const tinyxml2::XMLElement& element, ActuatorProfile& profile) {
     const std::string chip = element.Attribute("chip") != nullptr ? element.Attribute("chip") : "";
     if (chip == "drv2605l") profile.driver = DriverChip::drv2605l;
@@ -209,6 +274,16 @@ std::string_view to_string(ActuatorType type) {
     case ActuatorType::erm: return "erm";
     case ActuatorType::voice_coil: return "voice_coil";
     case ActuatorType::ideal: return "ideal";
+  }
+  return "ideal";
+}
+
+std::string_view to_string(ResponseModel model) {
+  switch (model) {
+    case ResponseModel::lra: return "lra";
+    case ResponseModel::erm: return "erm";
+    case ResponseModel::voice_coil: return "voice_coil";
+    case ResponseModel::ideal: return "ideal";
   }
   return "ideal";
 }

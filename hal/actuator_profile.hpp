@@ -3,6 +3,9 @@
 // Format (docs/hardware.md, "Actuator profiles"):
 //   <actuator name="..." type="lra|erm|voice_coil|ideal">
 //     <resonance hz="175"/>
+//     <response model="lra" q="10"/>             (or bandwidth_hz="17.5"; optional)
+//     <response model="erm" spin_up_ms="30" spin_down_ms="45"/>
+//     <response model="voice_coil" low_hz="50" high_hz="500"/>
 //     <drive rated_voltage_V="1.8" overdrive_clamp_V="2.5" min_pulse_ms="20" braking="true"/>
 //     <driver chip="drv2605l|audio|bos1901|hid|none" bus="/dev/i2c-1" address="0x5A">
 //       <pin role="enable" gpio="gpiochip0:17"/>
@@ -13,6 +16,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "primitives/actuator/response_params.hpp"
 
 namespace vimg {
 
@@ -28,6 +33,9 @@ struct ActuatorProfile {
   std::string name;
   ActuatorType type = ActuatorType::ideal;
   double resonance_hz = 175.0;
+  // How drive becomes acceleration (docs/actuators.md). Without <response>: the model of `type`
+  // with the defaults of ResponseParams; response.resonance_hz is always resonance_hz.
+  ResponseParams response;
   double rated_voltage_V = 0.0;      // steady-state drive (RMS) the actuator is rated for
   double overdrive_clamp_V = 0.0;    // peak the driver may reach, e.g. while starting
   double min_pulse_s = 0.0;          // shorter pulses are stretched to this
@@ -54,6 +62,7 @@ ProfileLoadResult load_actuator_profile(const std::filesystem::path& path);
 std::optional<GpioPin> parse_gpio_pin(std::string_view text);
 
 std::string_view to_string(ActuatorType type);
+std::string_view to_string(ResponseModel model);
 std::string_view to_string(DriverChip chip);
 
 }  // namespace vimg

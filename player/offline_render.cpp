@@ -24,6 +24,7 @@ OfflineRenderResult render_gesture(const Scene& scene, const Gesture& gesture, D
 
   std::vector<FingerStep> steps;
   std::vector<float> block(std::max<std::size_t>(1, options.block_samples));
+  if (options.actuator != nullptr) options.actuator->reset();
   sink.open(rate);
   std::uint64_t n = 0;
   bool done = false;
@@ -40,7 +41,8 @@ OfflineRenderResult render_gesture(const Scene& scene, const Gesture& gesture, D
       // The first sample has no history: its step is empty.
       playback.steps_at(t, n == 0 ? 0.0 : dt, steps);
       const double d = mixer.step(steps, t, dt);
-      block[filled++] = static_cast<float>(soft_limit(d));
+      const auto drive = static_cast<float>(soft_limit(d));
+      block[filled++] = options.actuator != nullptr ? options.actuator->process(drive) : drive;
       ++n;
       if ((t >= end_s && steps.empty() && mixer.active_contacts() == 0) || t >= hard_end_s) {
         done = true;
