@@ -30,7 +30,10 @@ inline constexpr std::size_t kMaxNrrdHeaderBytes = 1 * kMiB / kLimitScale;  // t
 inline constexpr std::size_t kMaxVolumeFileBytes = 1024 * kMiB;  // a whole NRRD file (header and data)
 
 // --- XML structure (images and volume scenes; checked before tinyxml2 builds its tree) --------------
-inline constexpr std::size_t kMaxXmlElements = 1'000'000 / kLimitScale;  // elements, comments and other markup per file
+// Elements and attributes per file keep the validation of any file under 2 s (docs/limits.md):
+// 2.3x and 2x the 100 000-primitive benchmark image (110 002 elements, 750 006 attributes).
+inline constexpr std::size_t kMaxXmlElements = 250'000 / kLimitScale;  // elements, comments and other markup per file
+inline constexpr std::size_t kMaxXmlAttributes = 1'500'000 / kLimitScale;  // attributes per file
 inline constexpr std::size_t kMaxAttributesPerElement = 64;
 inline constexpr int kMaxXmlNestingDepth = 64;             // elements inside elements, the root is depth 1
 inline constexpr std::size_t kMaxPolygonPoints = 100'000 / kLimitScale;  // points of one polygon surface
@@ -50,6 +53,8 @@ inline constexpr std::size_t kMaxGestureRows = 1'000'000 / kLimitScale;
 inline constexpr double kMaxGestureDurationS = 600.0;   // last time minus first time
 inline constexpr double kMaxGestureTimeS = 86'400.0;    // |time_s| at most
 inline constexpr double kMaxGestureCoordinateMm = kMaxCanvasMm;  // |x_mm|, |y_mm| at most
+inline constexpr std::size_t kMaxTouchTraceFileBytes = 64 * kMiB / kLimitScale;  // an evemu or getevent recording
+inline constexpr int kMaxTouchTraceFinger = 63;  // slots and fingers of a recording: a gesture's fingers 0..63
 
 // --- Probe paths (storage/volume/probe_path_io.cpp) ------------------------------------------------
 inline constexpr std::size_t kMaxProbePathRows = 1'000'000 / kLimitScale;
