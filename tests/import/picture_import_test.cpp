@@ -1,0 +1,184 @@
+// Picture import: marching-squares outlines enclose exactly the set pixels, simplification stays
+// within its tolerance, and pictures become SURFACE polygons by grey level (darker = stronger).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "png_fixture.hpp"
+#include "primitives/geometry/hit_test.hpp"
+#include "storage/image_io.hpp"
+#include "storage/import/contours.hpp"
+#include "storage/import/import.hpp"
+#include "storage/import/rings.hpp"
+#include "storage/png_codec.hpp"
+
+namespace vimg {
+namespace {
+
+using import::Ring;
+
+// Even-odd over all rings, as a SURFACE polygon fills.
+bool inside_any(const std::vector<Ring>& rings, Vec2 p) {
+  bool inside = false;
+  for (const Ring& r : rings) inside ^= contains(Polygon{r}, p);
+  return inside;
+}
+
+TEST(Contours, RandomMasksAreEnclosedExactlyAtEveryPixelCentre) {
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int w = 1 + static_cast<int>(rng() % 12), h = 1 + static_cast<int>(rng() % 12);
+    std::vector<std::uint8_t> mask(static_cast<std::size_t>(w * h));
+    for (auto& m : mask) m = rng() % 2;
+    const std::vector<Ring> rings = import::trace_contours(mask, w, h);
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        EXPECT_EQ(inside_any(rings, {x + 0.5, y + 0.5}), mask[static_cast<std::size_t>(y * w + x)] != 0)
+            << "trial " << trial << " pixel " << x << "," << y;
+      }
+    }
+  }
+}
+
+TEST(Contours, OuterOutlinesAndHolesTurnOppositeWays) {
+  // A 3x3 ring of set pixels: one outer outline and one hole.
+  const std::vector<std::uint8_t> mask = {1, 1, 1, 1, 0, 1, 1, 1, 1};
+  const std::vector<Ring> rings = import::trace_contours(mask, 3, 3);
+  ASSERT_EQ(rings.size(), 2u);
+  const double a0 = import::twice_signed_area(rings[0]), a1 = import::twice_signed_area(rings[1]);
+  EXPECT_LT(std::min(a0, a1), 0.0);  // outer
+  EXPECT_GT(std::max(a0, a1), 0.0);  // hole
+}
+
+TEST(Contours, SimplificationStaysWithinItsTolerance) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> noise(-0.3, 0.3);
+  Ring circle;
+  for (int i = 0; i < 500; ++i) {
+    const double a = 2 * std::numbers::pi * i / 500;
+    circle.push_back({50 + 40 * std::cos(a) + noise(rng), 50 + 40 * std::sin(a) + noise(rng)});
+  }
+  for (const double tolerance : {0.1, 0.5, 2.0}) {
+    const Ring simple = import::simplify_ring(circle, tolerance);
+    EXPECT_LT(simple.size(), circle.size());
+    for (const Vec2& p : circle) {
+      double best = 1e9;
+      for (std::size_t i = 0; i < simple.size(); ++i) {
+        best = std::min(best, distance_to_segment(p, simple[i], simple[(i + 1) % simple.size()]));
+      }
+      EXPECT_LE(best, tolerance + 1e-12);
+    }
+  }
+}
+
+std::vector<std::uint8_t> white(int w, int h, int channels) {
+  return std::vector<std::uint8_t>(static_cast<std::size_t>(w * h * channels), 255);
+}
+
+void fill(std::vector<std::uint8_t>& px, int w, int channels, int x0, int y0, int x1, int y1, std::uint8_t value) {
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      for (int c = 0; c < std::min(channels, 3); ++c) px[static_cast<std::size_t>((y * w + x) * channels + c)] = value;
+    }
+  }
+}
+
+std::vector<const Surface*> surfaces(const Image& img) {
+  std::vector<const Surface*> out;
+  for (const Element& e : img.children) {
+    for (const Element& c : std::get<Group>(e.body).children) out.push_back(&std::get<Surface>(c.body));
+  }
+  return out;
+}
+
+ImportOptions picture_options(double width_mm, int levels = 4) {
+  ImportOptions o;
+  o.width_mm = width_mm;
+  o.levels = levels;
+  return o;
+}
+
+TEST(PictureImport, BlackSquareOnWhiteIsOneSurfaceCoveringIt) {
+  const int w = 40, h = 30;
+  std::vector<std::uint8_t> px = white(w, h, 1);
+  fill(px, w, 1, 10, 8, 25, 23, 0);  // 15 x 15 px at (10, 8)
+  const double mm_per_px = 0.5;
+  const ImportResult r = import_picture(test::make_png(w, h, 1, px), "sq.png", picture_options(w * mm_per_px));
+  ASSERT_TRUE(r.ok());
+  EXPECT_DOUBLE_EQ(r.image->height_mm, h * mm_per_px);
+  const auto all = surfaces(*r.image);
+  ASSERT_EQ(all.size(), 1u);
+  const Surface& s = *all[0];
+  EXPECT_DOUBLE_EQ(s.gain, 1.0);
+  double min_x = 1e9, min_y = 1e9, max_x = -1e9, max_y = -1e9;
+  for (const Point2Mm& p : s.points) {
+    min_x = std::min(min_x, p.x_mm), max_x = std::max(max_x, p.x_mm);
+    min_y = std::min(min_y, p.y_mm), max_y = std::max(max_y, p.y_mm);
+  }
+  EXPECT_NEAR(min_x, 10 * mm_per_px, mm_per_px);
+  EXPECT_NEAR(max_x, 25 * mm_per_px, mm_per_px);
+  EXPECT_NEAR(min_y, 8 * mm_per_px, mm_per_px);
+  EXPECT_NEAR(max_y, 23 * mm_per_px, mm_per_px);
+  // Every pixel centre of the square is covered and every other one is not.
+  Polygon poly;
+  for (const Point2Mm& p : s.points) poly.vertices.push_back({p.x_mm, p.y_mm});
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const bool in_square = x >= 10 && x < 25 && y >= 8 && y < 23;
+      EXPECT_EQ(contains(poly, {(x + 0.5) * mm_per_px, (y + 0.5) * mm_per_px}), in_square) << x << "," << y;
+    }
+  }
+}
+
+TEST(PictureImport, HolesAreKeptAndLevelsFollowDarkness) {
+  const int w = 30, h = 30;
+  std::vector<std::uint8_t> px = white(w, h, 3);
+  fill(px, w, 3, 2, 2, 28, 28, 0);      // black frame ...
+  fill(px, w, 3, 8, 8, 22, 22, 255);    // ... with a white hole ...
+  fill(px, w, 3, 12, 12, 18, 18, 128);  // ... holding a mid-grey island
+  const ImportResult r = import_picture(test::make_png(w, h, 3, px), "frame.png", picture_options(30.0, 4));
+  ASSERT_TRUE(r.ok());
+  const auto all = surfaces(*r.image);
+  ASSERT_EQ(all.size(), 2u);
+  const Surface* grey = all[0]->gain < all[1]->gain ? all[0] : all[1];
+  const Surface* black = all[0]->gain < all[1]->gain ? all[1] : all[0];
+  EXPECT_DOUBLE_EQ(black->gain, 1.0);
+  EXPECT_DOUBLE_EQ(grey->gain, 0.5);  // 128/255 darkness ~0.5: level 2 of 4
+  Polygon frame;
+  for (const Point2Mm& p : black->points) frame.vertices.push_back({p.x_mm, p.y_mm});
+  EXPECT_TRUE(contains(frame, {4.5, 4.5}));
+  EXPECT_FALSE(contains(frame, {10.5, 10.5}));  // the hole
+  EXPECT_FALSE(contains(frame, {15.5, 15.5}));  // the island is not part of the frame
+  EXPECT_TRUE(parse_image_xml(write_image_xml(*r.image), "frame.vimg").ok());
+}
+
+TEST(PictureImport, TransparentPixelsAreWhite) {
+  std::vector<std::uint8_t> px(static_cast<std::size_t>(10 * 10 * 4), 0);  // black, fully transparent
+  const ImportResult r = import_picture(test::make_png(10, 10, 4, px), "clear.png", picture_options(10.0));
+  ASSERT_TRUE(r.ok());
+  EXPECT_TRUE(r.image->children.empty());
+}
+
+TEST(PictureImport, BadOptionsAndDamagedFilesAreErrors) {
+  const std::string png = test::make_png(4, 4, 1, white(4, 4, 1));
+  EXPECT_FALSE(import_picture(png, "p.png", {}).ok());  // no width
+  EXPECT_FALSE(import_picture(png, "p.png", picture_options(10.0, 0)).ok());
+  EXPECT_FALSE(import_picture(png, "p.png", picture_options(10.0, kMaxPictureLevels + 1)).ok());
+  EXPECT_FALSE(import_picture(png.substr(0, png.size() - 20), "p.png", picture_options(10.0)).ok());
+  const ImportResult tall = import_picture(test::make_png(1, 100, 1, white(1, 100, 1)), "p.png", picture_options(200.0));
+  ASSERT_FALSE(tall.ok());
+  EXPECT_NE(tall.diagnostics.back().to_string().find("p.png: error:"), std::string::npos);
+}
+
+TEST(PictureImport, APngThatHoldsAVibroimageIsOpenedNotImported) {
+  const std::filesystem::path file = VIMG_SOURCE_DIR "/assets/examples/smiley.png";
+  const ImportResult r = import_file(file, picture_options(50.0));
+  ASSERT_TRUE(r.ok());
+  EXPECT_TRUE(r.opened_vibroimage);
+  EXPECT_EQ(*r.image, *load_image_file(file).image);
+}
+
+}  // namespace
+}  // namespace vimg
