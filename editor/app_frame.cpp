@@ -64,7 +64,7 @@ void EditorApp::frame() {
   const float props_h = (H - top - kStatusHeight) * 0.62f;
   properties_.draw(kToolsWidth + canvas_w, top, kPropertiesWidth, props_h);
   problems_.draw(kToolsWidth + canvas_w, top + props_h, kPropertiesWidth, H - top - kStatusHeight - props_h,
-                 session_.load_diagnostics());
+                 session_.editor(), session_.load_diagnostics(), layout_);
   draw_status_bar(W, H);
 
   draw_dialogs();

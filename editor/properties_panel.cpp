@@ -11,6 +11,8 @@
 
 #include "editor/core/element_ids.hpp"
 #include "editor/core/layout_log.hpp"
+#include "storage/number_text.hpp"
+#include "storage/parameter_table.hpp"
 
 namespace vimg::editor {
 namespace {
@@ -27,31 +29,74 @@ struct FieldResult {
   ImVec2 size;
 };
 
-// A number field with its unit and valid range; the value is clamped into the range. `open_min`
-// and `open_max` mark exclusive bounds (the value stays just inside).
-FieldResult number_field(const char* label, double& value, const char* unit, double min, double max,
-                         bool open_min = false, bool open_max = false) {
+// The name scripts find a field by in the layout log: the attribute's name, with "##" and the
+// element when another element has an attribute of that name ("radius", "width##line").
+std::string layout_name(const ParameterSpec& spec) {
+  for (const ParameterSpec& other : parameter_table()) {
+    if (&other != &spec && other.name == spec.name) return std::string(spec.name) + "##" + std::string(owner_tag(spec.owner));
+  }
+  return std::string(spec.name);
+}
+
+// What the parameter table says of an attribute: its meaning, range, unit and default.
+std::string help_text(const ParameterSpec& spec) {
+  std::string text = std::string(spec.meaning) + ".\nrange " + interval_text(spec);
+  if (spec.unit != "1") text += " " + std::string(spec.unit);
+  text += spec.required ? ", required" : ", default " + format_decimal(spec.default_value);
+  return text;
+}
+
+// A number field as the parameter table describes it (storage/parameter_table.hpp): the unit in the
+// label, the range beside it, the meaning as its tooltip. A typed value is clamped into the range;
+// a value read out of range (a file with problems) is shown in red until it is changed or clamped.
+FieldResult number_field(const ParameterSpec& spec, double& value) {
   FieldResult r;
   double v = value;
-  char range[96];
-  std::snprintf(range, sizeof range, "%s%g, %g%s", open_min ? "(" : "[", min, max, open_max ? ")" : "]");
+  const std::string unit = spec.unit == "1" ? "" : " (" + std::string(spec.unit) + ")";
+  const std::string label = std::string(spec.name) + unit + "##" + std::string(owner_tag(spec.owner));
+  const bool outside = !in_range(spec, value);
   ImGui::SetNextItemWidth(120);
-  const bool edited = ImGui::InputDouble(label, &v, 0.0, 0.0, "%.6g");
+  if (outside) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.55f, 0.12f, 0.12f, 1.0f));
+  const bool edited = ImGui::InputDouble(label.c_str(), &v, 0.0, 0.0, "%.6g");
+  if (outside) ImGui::PopStyleColor();
   r.activated = ImGui::IsItemActivated();
   r.deactivated = ImGui::IsItemDeactivated();
   r.min = ImGui::GetItemRectMin();
   r.size = ImGui::GetItemRectSize();
   const bool hovered = ImGui::IsItemHovered();
   ImGui::SameLine();
-  ImGui::TextDisabled("%s %s", unit, range);
-  if (hovered) ImGui::SetTooltip("valid range %s %s", range, unit);
+  if (outside) {
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "outside %s", interval_text(spec).c_str());
+  } else {
+    ImGui::TextDisabled("%s", interval_text(spec).c_str());
+  }
+  if (hovered || ImGui::IsItemHovered()) ImGui::SetTooltip("%s", help_text(spec).c_str());
   if (!edited || !std::isfinite(v)) return r;
-  const double eps = 1e-9 * std::max(1.0, std::abs(max - min));
-  v = std::clamp(v, open_min ? min + eps : min, open_max ? max - eps : max);
+  v = clamp_to_range(spec, v);
   if (v == value) return r;
   value = v;
   r.changed = true;
   return r;
+}
+
+// A choice of the parameter table as a combo box; `index` is the word's place in `choices` (the
+// model's enumerations follow the table's order).
+bool choice_field(const ParameterSpec& spec, int& index) {
+  std::string items;
+  for (const char c : spec.choices) items += c == '|' ? '\0' : c;
+  items += '\0';
+  items += '\0';
+  ImGui::SetNextItemWidth(120);
+  const std::string label = std::string(spec.name) + "##" + std::string(owner_tag(spec.owner));
+  const bool changed = ImGui::Combo(label.c_str(), &index, items.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(spec.meaning).c_str());
+  return changed;
+}
+
+ParameterOwner owner_of(const Element& e) {
+  if (std::holds_alternative<Line>(e.body)) return ParameterOwner::line;
+  if (std::holds_alternative<Surface>(e.body)) return ParameterOwner::surface;
+  return ParameterOwner::dot;
 }
 
 }  // namespace
@@ -84,16 +129,13 @@ void PropertiesPanel::draw_element(const std::string& id) {
   if (!current) return;
   Element e = *current;
   bool changed = false;
-  auto field = [&](const char* label, double& v, const char* unit, double min, double max, bool open_min = false,
-                   bool open_max = false) {
-    const FieldResult r = number_field(label, v, unit, min, max, open_min, open_max);
+  auto field = [&](const ParameterSpec& spec, double& v) {
+    const FieldResult r = number_field(spec, v);
     changed |= r.changed;
     if (r.activated) doc_.begin_gesture();
     if (r.deactivated) doc_.end_gesture();
-    layout_.print(label, r.min.x, r.min.y, r.size.x, r.size.y);
+    layout_.print(layout_name(spec), r.min.x, r.min.y, r.size.x, r.size.y);
   };
-  // Wherever a coordinate may go: the document's size bound of the spec, with room off the canvas.
-  constexpr double kCoord = 10000.0;
 
   ImGui::Text("%s", kind_name(e).c_str());
   if (id_for_ != id || !ImGui::IsAnyItemActive()) {
@@ -114,92 +156,33 @@ void PropertiesPanel::draw_element(const std::string& id) {
       changed = true;
     }
   }
-  if (auto* d = std::get_if<Dot>(&e.body)) {
-    field("x##dot", d->x_mm, "mm", -kCoord, kCoord);
-    field("y##dot", d->y_mm, "mm", -kCoord, kCoord);
-    field("radius", d->radius_mm, "mm", 0, kCoord, true);
-    field("gain##dot", d->gain, "", 0, 1);
-  } else if (auto* l = std::get_if<Line>(&e.body)) {
-    field("x1", l->x1_mm, "mm", -kCoord, kCoord);
-    field("y1", l->y1_mm, "mm", -kCoord, kCoord);
-    field("x2", l->x2_mm, "mm", -kCoord, kCoord);
-    field("y2", l->y2_mm, "mm", -kCoord, kCoord);
-    field("width##line", l->width_mm, "mm", 0, kCoord, true);
-    field("frequency", l->frequency_hz, "Hz", 0, 1000, true);
-    field("damping", l->damping, "", 0, 1, true, true);
-    field("gain##line", l->gain, "", 0, 1);
-  } else if (auto* s = std::get_if<Surface>(&e.body)) {
-    static constexpr const char* kShapes[] = {"rect", "ellipse", "polygon"};
-    int shape = static_cast<int>(s->shape);
-    ImGui::SetNextItemWidth(120);
-    if (ImGui::Combo("shape", &shape, kShapes, 3)) {
-      // Keep the same place and size in the new shape.
-      const RectMm b = element_bounds(e).value_or(RectMm{0, 0, 10, 10});
-      s->shape = static_cast<SurfaceShape>(shape);
-      s->x_mm = b.x0_mm;
-      s->y_mm = b.y0_mm;
-      s->width_mm = std::max(0.1, b.width_mm());
-      s->height_mm = std::max(0.1, b.height_mm());
-      s->cx_mm = (b.x0_mm + b.x1_mm) / 2;
-      s->cy_mm = (b.y0_mm + b.y1_mm) / 2;
-      s->rx_mm = std::max(0.05, b.width_mm() / 2);
-      s->ry_mm = std::max(0.05, b.height_mm() / 2);
-      s->points = {{b.x0_mm, b.y0_mm}, {b.x1_mm, b.y0_mm}, {b.x1_mm, b.y1_mm}, {b.x0_mm, b.y1_mm}};
-      if (s->shape != SurfaceShape::rect) s->x_mm = s->y_mm = s->width_mm = s->height_mm = 0;
-      if (s->shape != SurfaceShape::ellipse) s->cx_mm = s->cy_mm = s->rx_mm = s->ry_mm = 0;
-      if (s->shape != SurfaceShape::polygon) s->points.clear();
-      changed = true;
-    }
-    if (s->shape == SurfaceShape::rect) {
-      field("x##rect", s->x_mm, "mm", -kCoord, kCoord);
-      field("y##rect", s->y_mm, "mm", -kCoord, kCoord);
-      field("width##rect", s->width_mm, "mm", 0, kCoord, true);
-      field("height##rect", s->height_mm, "mm", 0, kCoord, true);
-    } else if (s->shape == SurfaceShape::ellipse) {
-      field("cx", s->cx_mm, "mm", -kCoord, kCoord);
-      field("cy", s->cy_mm, "mm", -kCoord, kCoord);
-      field("rx", s->rx_mm, "mm", 0, kCoord, true);
-      field("ry", s->ry_mm, "mm", 0, kCoord, true);
-    } else {
-      ImGui::Text("%zu points (x, y mm)", s->points.size());
-      for (std::size_t i = 0; i < s->points.size(); ++i) {
-        ImGui::PushID(static_cast<int>(i));
-        double xy[2] = {s->points[i].x_mm, s->points[i].y_mm};
-        ImGui::SetNextItemWidth(200);
-        if (ImGui::InputScalarN("##pt", ImGuiDataType_Double, xy, 2, nullptr, nullptr, "%.6g") &&
-            std::isfinite(xy[0]) && std::isfinite(xy[1])) {
-          s->points[i] = {std::clamp(xy[0], -kCoord, kCoord), std::clamp(xy[1], -kCoord, kCoord)};
-          changed = true;
-        }
-        track_widget_gesture();
-        if (s->points.size() > 3) {
-          ImGui::SameLine();
-          if (ImGui::SmallButton("-")) {
-            s->points.erase(s->points.begin() + static_cast<std::ptrdiff_t>(i));
-            changed = true;
-            ImGui::PopID();
-            break;
+  if (std::holds_alternative<Dot>(e.body) || std::holds_alternative<Line>(e.body) ||
+      std::holds_alternative<Surface>(e.body)) {
+    // Every attribute in the parameter table's order.
+    const ParameterOwner owner = owner_of(e);
+    for (const ParameterSpec& spec : parameter_table()) {
+      if (spec.owner != owner) continue;
+      auto* s = std::get_if<Surface>(&e.body);
+      if (s != nullptr && !applies_to_shape(spec, s->shape)) continue;
+      switch (spec.kind) {
+        case ParameterKind::number: field(spec, *number_in(e, spec)); break;
+        case ParameterKind::choice:
+          if (spec.name == "shape") {
+            changed |= shape_field(spec, e);
+          } else {
+            int pattern = static_cast<int>(s->pattern);
+            if (choice_field(spec, pattern)) {
+              s->pattern = static_cast<SurfacePattern>(pattern);
+              changed = true;
+            }
           }
-        }
-        ImGui::PopID();
-      }
-      if (ImGui::SmallButton("add point")) {
-        const Point2Mm a = s->points.back();
-        const Point2Mm b = s->points.front();
-        s->points.push_back({(a.x_mm + b.x_mm) / 2, (a.y_mm + b.y_mm) / 2});
-        changed = true;
+          break;
+        case ParameterKind::points: changed |= points_field(*s); break;
+        case ParameterKind::id:
+        case ParameterKind::text:
+        case ParameterKind::version: break;  // the id is above
       }
     }
-    field("period", s->period_mm, "mm", 0, kCoord, true);
-    field("relief", s->relief_mm, "mm", 0, kCoord, true);
-    static constexpr const char* kPatterns[] = {"sine", "square", "triangle"};
-    int pattern = static_cast<int>(s->pattern);
-    ImGui::SetNextItemWidth(120);
-    if (ImGui::Combo("pattern", &pattern, kPatterns, 3)) {
-      s->pattern = static_cast<SurfacePattern>(pattern);
-      changed = true;
-    }
-    field("gain##surface", s->gain, "", 0, 1);
   } else if (auto* g = std::get_if<Group>(&e.body)) {
     if (name_for_ != id || !ImGui::IsAnyItemActive()) {
       std::snprintf(name_buffer_, sizeof name_buffer_, "%s", g->name.value_or("").c_str());
@@ -219,28 +202,83 @@ void PropertiesPanel::draw_element(const std::string& id) {
   if (changed) doc_.replace_element(id, e);
 }
 
+bool PropertiesPanel::shape_field(const ParameterSpec& spec, Element& e) {
+  auto& s = std::get<Surface>(e.body);
+  int shape = static_cast<int>(s.shape);
+  if (!choice_field(spec, shape)) return false;
+  // Keep the same place and size in the new shape.
+  const RectMm b = element_bounds(e).value_or(RectMm{0, 0, 10, 10});
+  s.shape = static_cast<SurfaceShape>(shape);
+  s.x_mm = b.x0_mm;
+  s.y_mm = b.y0_mm;
+  s.width_mm = std::max(0.1, b.width_mm());
+  s.height_mm = std::max(0.1, b.height_mm());
+  s.cx_mm = (b.x0_mm + b.x1_mm) / 2;
+  s.cy_mm = (b.y0_mm + b.y1_mm) / 2;
+  s.rx_mm = std::max(0.05, b.width_mm() / 2);
+  s.ry_mm = std::max(0.05, b.height_mm() / 2);
+  s.points = {{b.x0_mm, b.y0_mm}, {b.x1_mm, b.y0_mm}, {b.x1_mm, b.y1_mm}, {b.x0_mm, b.y1_mm}};
+  if (s.shape != SurfaceShape::rect) s.x_mm = s.y_mm = s.width_mm = s.height_mm = 0;
+  if (s.shape != SurfaceShape::ellipse) s.cx_mm = s.cy_mm = s.rx_mm = s.ry_mm = 0;
+  if (s.shape != SurfaceShape::polygon) s.points.clear();
+  return true;
+}
+
+bool PropertiesPanel::points_field(Surface& s) {
+  bool changed = false;
+  ImGui::Text("%zu points (x, y mm)", s.points.size());
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    double xy[2] = {s.points[i].x_mm, s.points[i].y_mm};
+    ImGui::SetNextItemWidth(200);
+    if (ImGui::InputScalarN("##pt", ImGuiDataType_Double, xy, 2, nullptr, nullptr, "%.6g") && std::isfinite(xy[0]) &&
+        std::isfinite(xy[1])) {
+      s.points[i] = {xy[0], xy[1]};
+      changed = true;
+    }
+    track_widget_gesture();
+    if (s.points.size() > 3) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("-")) {
+        s.points.erase(s.points.begin() + static_cast<std::ptrdiff_t>(i));
+        ImGui::PopID();
+        return true;
+      }
+    }
+    ImGui::PopID();
+  }
+  if (ImGui::SmallButton("add point")) {
+    const Point2Mm a = s.points.back();
+    const Point2Mm b = s.points.front();
+    s.points.push_back({(a.x_mm + b.x_mm) / 2, (a.y_mm + b.y_mm) / 2});
+    changed = true;
+  }
+  return changed;
+}
+
 void PropertiesPanel::draw_document() {
   Image settings = doc_.image();
   settings.children.clear();
   bool changed = false;
-  auto field = [&](const char* label, double& v, const char* unit, double min, double max, bool open_min = false) {
-    const FieldResult r = number_field(label, v, unit, min, max, open_min);
-    changed |= r.changed;
-    if (r.activated) doc_.begin_gesture();
-    if (r.deactivated) doc_.end_gesture();
-    layout_.print(label, r.min.x, r.min.y, r.size.x, r.size.y);
+  auto fields = [&](ParameterOwner owner) {
+    for (const ParameterSpec& spec : parameter_table()) {
+      if (spec.owner != owner || spec.kind != ParameterKind::number) continue;
+      const FieldResult r = number_field(spec, *number_in(settings, spec));
+      changed |= r.changed;
+      if (r.activated) doc_.begin_gesture();
+      if (r.deactivated) doc_.end_gesture();
+      layout_.print(layout_name(spec), r.min.x, r.min.y, r.size.x, r.size.y);
+    }
   };
   ImGui::Text("Document (select an element to edit it)");
-  field("width##doc", settings.width_mm, "mm", 0, 10000, true);
-  field("height##doc", settings.height_mm, "mm", 0, 10000, true);
+  fields(ParameterOwner::canvas);
   ImGui::Separator();
   ImGui::Text("Finger (interaction point)");
-  InteractionParams ip = settings.effective_interaction();
-  const InteractionParams before = ip;
-  field("mass", ip.mass_kg, "kg", 0, 10, true);
-  field("full speed", ip.full_speed_mm_per_s, "mm/s", 0, 100000, true);
-  field("max deformation", ip.max_deformation_mm, "mm", 0, 100, true);
-  if (!(ip == before)) settings.interaction = ip;
+  const bool had_interaction = settings.interaction.has_value();
+  settings.interaction = settings.effective_interaction();
+  fields(ParameterOwner::interaction);
+  // Absent means the defaults, and stays absent until a value is changed.
+  if (!had_interaction && *settings.interaction == InteractionParams{}) settings.interaction.reset();
   ImGui::Separator();
   ImGui::Text("Meta");
   Meta meta = settings.meta.value_or(Meta{});

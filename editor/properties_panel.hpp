@@ -1,10 +1,12 @@
 #pragma once
-// The inspector's properties panel: every attribute of the single selected element with its unit
-// and valid range, or, with nothing selected, the document's size, finger parameters and meta.
+// The inspector's properties panel: every attribute of the single selected element as the parameter
+// table describes it (storage/parameter_table.hpp: unit in the label, range beside the field, the
+// meaning as its tooltip), or, with nothing selected, the document's size, finger parameters and meta.
 // Each widget interaction is one undo step (a gesture of the DocumentEditor). GUI thread.
 #include <string>
 
 #include "editor/core/document_editor.hpp"
+#include "storage/parameter_table.hpp"
 #include "editor/notices.hpp"
 
 namespace vimg::editor {
@@ -19,6 +21,9 @@ class PropertiesPanel {
  private:
   void draw_element(const std::string& id);
   void draw_document();
+  // The shape of a surface (keeping its place and size) and a polygon's points; true when changed.
+  bool shape_field(const ParameterSpec& spec, Element& e);
+  bool points_field(Surface& s);
   // Brackets the last widget's interaction into one undo step.
   void track_widget_gesture();
 

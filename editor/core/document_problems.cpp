@@ -130,20 +130,12 @@ std::string describe(const ClampFix& fix) {
 }
 
 std::vector<Problem> problem_list(const Image& image, const std::vector<Diagnostic>& load_diagnostics,
-                                  const std::vector<ValueProblem>& load_value_problems,
                                   const std::vector<Diagnostic>& live) {
   std::vector<Problem> out;
   for (const ClampFix& fix : find_out_of_range(image)) out.push_back({Diagnostic::Severity::error, describe(fix), fix});
-
-  std::set<std::pair<int, std::string>> value_lines;  // the reader's out-of-range messages, by line
-  for (const ValueProblem& p : load_value_problems) value_lines.insert({p.line, out_of_range_message(*p.parameter, "")});
   Merger merged(out);
   for (const Diagnostic& d : load_diagnostics) {
-    bool about_value = false;
-    for (auto it = value_lines.lower_bound({d.line, ""}); it != value_lines.end() && it->first == d.line; ++it) {
-      about_value = about_value || starts_with(d.message, it->second);
-    }
-    if (!about_value) merged.add(d, true);
+    if (!is_range_message(d.message)) merged.add(d, true);
   }
   std::vector<const Diagnostic*> later;
   for (const Diagnostic& d : live) {

@@ -50,11 +50,12 @@ struct Problem {
 };
 
 // The problem list: the numbers out of range in the image now (each with its fix), then the
-// reader's diagnostics that are not about those numbers (the file's lines), then the diagnostics of
-// a later check (`live`, e.g. of the canonical text; no lines, they are not the file's) that say
-// something not said above. Identical messages appear once, naming all their lines.
+// reader's other diagnostics (with the file's lines), then the diagnostics of a later check (`live`,
+// e.g. of the canonical text; no lines, they are not the file's) that say something not said above.
+// Out-of-range messages of the reader and of `live` are left out: the image's own values are the
+// list's (a value left out with an unreadable element goes with that element's error). Identical
+// messages appear once, naming all their lines. Costs a pass over the image: cache it per change.
 std::vector<Problem> problem_list(const Image& image, const std::vector<Diagnostic>& load_diagnostics,
-                                  const std::vector<ValueProblem>& load_value_problems,
                                   const std::vector<Diagnostic>& live);
 
 }  // namespace vimg::editor

@@ -1,5 +1,6 @@
 #include "editor/core/document_session.hpp"
 
+#include "editor/core/document_problems.hpp"
 #include "storage/image_io.hpp"
 
 namespace vimg::editor {
@@ -46,14 +47,16 @@ void DocumentSession::new_document() {
 
 std::optional<std::string> DocumentSession::open(const std::string& path, const std::function<void()>& before_replace) {
   LoadResult result = load_image_file(path);
-  if (!result.ok()) {
+  if (!result.ok() && !result.readable) {
     recent_.remove(path);
     return result.diagnostics.empty() ? path + ": cannot open" : join_diagnostics(result.diagnostics);
   }
+  // A file with problems opens with every element that could be read; its problems are listed.
+  OpenedDocument opened = *open_document_with_problems(std::move(result));
   if (before_replace) before_replace();
-  doc_.reset(std::move(*result.image));
+  doc_.reset(std::move(opened.image));
   path_ = path;
-  load_diagnostics_ = std::move(result.diagnostics);
+  load_diagnostics_ = std::move(opened.diagnostics);
   recent_.add(path);
   discard_recovery_unless_pending();
   return std::nullopt;

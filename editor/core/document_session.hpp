@@ -43,7 +43,8 @@ class DocumentSession {
   void new_document();
   // Reads `path`. On success `before_replace` runs, then the document is replaced, the path and
   // the recent-files list updated; on failure the document stays and the message is returned
-  // (the path leaves the recent-files list).
+  // (the path leaves the recent-files list). A file with errors that can still be read opens with
+  // every element that could be read, its problems in load_diagnostics() (document_problems.hpp).
   std::optional<std::string> open(const std::string& path, const std::function<void()>& before_replace = {});
   // Writes the document (the format by extension, atomically). `becomes_document_path`: the
   // document now belongs to `path` and is saved (Save, Save As); otherwise a copy (Export).

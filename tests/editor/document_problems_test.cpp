@@ -31,7 +31,7 @@ OpenedDocument open_text(const std::string& xml) {
 
 std::vector<Problem> problems_of(const DocumentEditor& doc, const OpenedDocument& opened) {
   const LoadResult live = parse_image_xml(write_image_xml(doc.image()), "f.vimg");
-  return problem_list(doc.image(), opened.diagnostics, opened.value_problems, live.diagnostics);
+  return problem_list(doc.image(), opened.diagnostics, live.diagnostics);
 }
 
 const Element& nested(const Image& image, std::size_t group, std::size_t child) {
