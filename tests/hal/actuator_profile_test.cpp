@@ -75,6 +75,77 @@ TEST(ActuatorProfile, Drv2605lNeedsARatedVoltage) {
   EXPECT_NE(result.errors[0].find("rated_voltage_V"), std::string::npos);
 }
 
+TEST(ActuatorProfile, ShippedProfilesDescribeTheirResponse) {
+  const auto lra = load_actuator_profile(kProfiles + "lra-175hz-drv2605l.xml");
+  ASSERT_TRUE(lra.profile);
+  EXPECT_EQ(lra.profile->response.model, ResponseModel::lra);
+  EXPECT_DOUBLE_EQ(lra.profile->response.resonance_hz, 175.0);
+  EXPECT_DOUBLE_EQ(lra.profile->response.q, 10.0);
+  const auto erm = load_actuator_profile(kProfiles + "erm-10mm.xml");
+  ASSERT_TRUE(erm.profile) << (erm.errors.empty() ? "" : erm.errors.front());
+  EXPECT_EQ(erm.profile->type, ActuatorType::erm);
+  EXPECT_EQ(erm.profile->response.model, ResponseModel::erm);
+  EXPECT_DOUBLE_EQ(erm.profile->response.spin_up_s, 0.030);
+  EXPECT_DOUBLE_EQ(erm.profile->response.spin_down_s, 0.045);
+  EXPECT_DOUBLE_EQ(erm.profile->response.resonance_hz, 200.0);
+  const auto coil = load_actuator_profile(kProfiles + "voice-coil-audio.xml");
+  ASSERT_TRUE(coil.profile);
+  EXPECT_EQ(coil.profile->response.model, ResponseModel::voice_coil);
+  EXPECT_DOUBLE_EQ(coil.profile->response.low_hz, 50.0);
+  EXPECT_DOUBLE_EQ(coil.profile->response.high_hz, 500.0);
+  const auto ideal = load_actuator_profile(kProfiles + "ideal.xml");
+  ASSERT_TRUE(ideal.profile);
+  EXPECT_EQ(ideal.profile->response.model, ResponseModel::ideal);
+}
+
+TEST(ActuatorProfile, WithoutResponseTheModelFollowsTheTypeAndTheResonance) {
+  for (const auto& [type, model] : {std::pair{"lra", ResponseModel::lra}, std::pair{"erm", ResponseModel::erm},
+                                    std::pair{"voice_coil", ResponseModel::voice_coil}, std::pair{"ideal", ResponseModel::ideal}}) {
+    const auto result = parse_actuator_profile(
+        std::string("<actuator name=\"old\" type=\"") + type + "\">\n  <resonance hz=\"160\"/>\n</actuator>\n", "old.xml");
+    ASSERT_TRUE(result.profile) << type;
+    EXPECT_EQ(result.profile->response.model, model) << type;
+    EXPECT_DOUBLE_EQ(result.profile->response.resonance_hz, 160.0) << type;
+    EXPECT_DOUBLE_EQ(result.profile->response.q, ResponseParams{}.q) << type;
+  }
+}
+
+TEST(ActuatorProfile, BandwidthGivesQWhereverTheResonanceIsWritten) {
+  // <response> before <resonance>: Q = resonance / bandwidth all the same.
+  const auto result = parse_actuator_profile(
+      "<actuator name=\"x\" type=\"lra\">\n  <response bandwidth_hz=\"20\"/>\n  <resonance hz=\"170\"/>\n</actuator>\n", "bw.xml");
+  ASSERT_TRUE(result.profile) << (result.errors.empty() ? "" : result.errors.front());
+  EXPECT_DOUBLE_EQ(result.profile->response.q, 170.0 / 20.0);
+  EXPECT_DOUBLE_EQ(result.profile->response.resonance_hz, 170.0);
+}
+
+TEST(ActuatorProfile, BadResponseFieldsAreErrorsAtTheirLine) {
+  const struct {
+    const char* response;
+    const char* expected;
+  } cases[] = {
+      {"<response model=\"lra\" q=\"nan\"/>", "bad.xml:3: error: attribute 'q' is not a number: 'nan'"},
+      {"<response model=\"lra\" q=\"inf\"/>", "bad.xml:3: error: attribute 'q' is not a number: 'inf'"},
+      {"<response model=\"lra\" q=\"500\"/>", "bad.xml:3: error: attribute 'q' = 500 is outside [0.5, 200]"},
+      {"<response model=\"lra\" q=\"10\" bandwidth_hz=\"20\"/>", "bad.xml:3: error: <response> gives q or bandwidth_hz, not both"},
+      {"<response model=\"lra\" bandwidth_hz=\"0\"/>", "bad.xml:3: error: attribute 'bandwidth_hz' = 0 is outside"},
+      {"<response model=\"lra\" Q=\"10\"/>", "bad.xml:3: error: attribute 'Q' does not belong to <response model=\"lra\">"},
+      {"<response model=\"erm\" spin_up_ms=\"0\"/>", "bad.xml:3: error: attribute 'spin_up_ms' = 0 is outside [1, 2000]"},
+      {"<response model=\"erm\" low_hz=\"50\"/>", "bad.xml:3: error: attribute 'low_hz' does not belong to <response model=\"erm\">"},
+      {"<response model=\"voice_coil\" low_hz=\"600\" high_hz=\"500\"/>", "bad.xml:3: error: <response> low_hz must be below high_hz"},
+      {"<response model=\"voice_coil\" high_hz=\"1e9\"/>", "bad.xml:3: error: attribute 'high_hz' = 1e9 is outside [1, 20000]"},
+      {"<response model=\"piezo\"/>", "bad.xml:3: error: <response> model must be lra, erm, voice_coil or ideal, not 'piezo'"},
+      {"<response/><response/>", "bad.xml:3: error: <actuator> has more than one <response>"},
+  };
+  for (const auto& c : cases) {
+    const std::string xml = std::string("<actuator name=\"x\" type=\"lra\">\n  <resonance hz=\"175\"/>\n  ") + c.response + "\n</actuator>\n";
+    const auto result = parse_actuator_profile(xml, "bad.xml");
+    EXPECT_FALSE(result.profile) << c.response;
+    ASSERT_FALSE(result.errors.empty()) << c.response;
+    EXPECT_EQ(result.errors.front().rfind(c.expected, 0), 0u) << c.response << "\n" << result.errors.front();
+  }
+}
+
 TEST(ActuatorProfile, GpioPinText) {
   const auto pin = parse_gpio_pin("gpiochip2:5");
   ASSERT_TRUE(pin);
