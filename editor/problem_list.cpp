@@ -67,6 +67,8 @@ void ProblemList::draw(float x, float y, float w, float h, DocumentEditor& doc,
     ImGui::PushStyleColor(ImGuiCol_Text, colour);
     ImGui::TextWrapped("%s", p.text.c_str());
     ImGui::PopStyleColor();
+    layout.print("problem" + std::to_string(index - 1), ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y,
+                 ImGui::GetItemRectSize().x, ImGui::GetItemRectSize().y);
     ImGui::PopID();
   }
   ImGui::End();
