@@ -97,6 +97,11 @@ class Scanner {
       } else if (c == '"' || c == '\'') {
         quote = c;
       } else if (c == '=') {
+        if (++attributes_ > kMaxXmlAttributes) {
+          error_ = XmlLimitError{line, "more than " + std::to_string(kMaxXmlAttributes) + " attributes in the file (limit " +
+                                           std::to_string(kMaxXmlAttributes) + ")"};
+          return true;
+        }
         if (++attributes > kMaxAttributesPerElement) {
           error_ = XmlLimitError{line, "<" + escape_input(name) + "> has more than " +
                                            std::to_string(kMaxAttributesPerElement) + " attributes (limit " +
@@ -117,6 +122,7 @@ class Scanner {
   int line_ = 1;
   int depth_ = 0;
   std::size_t nodes_ = 0;
+  std::size_t attributes_ = 0;  // in the whole file
   std::optional<XmlLimitError> error_;
 };
 

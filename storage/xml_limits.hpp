@@ -15,7 +15,8 @@ struct XmlLimitError {
   std::string message;  // e.g. "<dot> has more than 64 attributes (limit 64)"
 };
 
-// Checks kMaxAttributesPerElement, kMaxXmlNestingDepth and kMaxXmlElements; nothing when within.
+// Checks kMaxAttributesPerElement, kMaxXmlAttributes, kMaxXmlNestingDepth and kMaxXmlElements;
+// nothing when within.
 // Malformed text is left to the parser: this pass only refuses what is over a limit.
 std::optional<XmlLimitError> check_xml_limits(std::string_view xml);
 

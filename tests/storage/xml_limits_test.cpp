@@ -100,7 +100,8 @@ TEST(XmlLimits, ElementsPerFileAreCounted) {
   ASSERT_FALSE(over.ok());
   ASSERT_EQ(over.diagnostics.size(), 1u);
   EXPECT_EQ(over.diagnostics[0].to_string(),
-            "e.vimg:3: error: more than 1000000 elements, comments and processing instructions (limit 1000000)");
+            "e.vimg:3: error: more than " + std::to_string(kMaxXmlElements) +
+                " elements, comments and processing instructions (limit " + std::to_string(kMaxXmlElements) + ")");
 }
 
 std::string polygon(std::size_t points) {
