@@ -38,6 +38,7 @@ void CanvasView::context_menu() {
 // A left press on the canvas with nothing being dragged.
 void CanvasView::press(Point2Mm raw, Point2Mm mouse) {
   const ImGuiIO& io = ImGui::GetIO();
+  drag_base_change_ = doc_.change_count();
   const double tolerance_mm = 4.0 / view_.px_per_mm();
   if (tool_ == Tool::polygon) {
     if (polygon_points_.size() >= 3) {
@@ -55,6 +56,9 @@ void CanvasView::press(Point2Mm raw, Point2Mm mouse) {
     drag_start_mm_ = mouse;
     return;
   }
+  // A vertex of the selected polygon or line, or a double-click on its edge?
+  if (press_vertex(raw)) return;
+  vertex_index_.reset();
   // A handle of the selection?
   resize_handle_ = -1;
   if (auto b = doc_.selection_bounds()) {
@@ -111,9 +115,12 @@ void CanvasView::handle_mouse() {
     doc_.move_selection(dx - drag_applied_mm_.x_mm, dy - drag_applied_mm_.y_mm);
     drag_applied_mm_ = {dx, dy};
   } else if (drag_ == Drag::resizing) {
-    const Point2Mm grip = handle_position(resize_from_, resize_handle_);
-    const RectMm r = resized_box(resize_from_, resize_handle_, mouse.x_mm - grip.x_mm, mouse.y_mm - grip.y_mm, 0.0);
+    // Snapped as a move is: the handle's edges move by whole snap steps.
+    const RectMm r = resized_box(resize_from_, resize_handle_, raw.x_mm - drag_start_mm_.x_mm,
+                                 raw.y_mm - drag_start_mm_.y_mm, snap_ ? snap_step_mm() : 0.0);
     if (auto current = doc_.selection_bounds()) doc_.resize_selection(*current, r);
+  } else if (drag_ == Drag::vertex) {
+    drag_vertex(mouse);
   }
 
   if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
@@ -122,7 +129,8 @@ void CanvasView::handle_mouse() {
         if (auto e = place_element(tool_, drag_start_mm_, mouse, view_.px_per_mm())) doc_.add_element(std::move(*e));
         break;
       case Drag::moving:
-      case Drag::resizing: doc_.end_gesture(); break;
+      case Drag::resizing:
+      case Drag::vertex: doc_.end_gesture(); break;
       case Drag::box: doc_.select_in_rect(rect_from_corners(drag_start_mm_, raw), io.KeyShift); break;
       default: break;
     }

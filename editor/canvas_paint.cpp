@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "editor/canvas_cache.hpp"
 #include "editor/canvas_view.hpp"
 #include "editor/core/polyline_lod.hpp"
 #include "editor/playback.hpp"
@@ -228,13 +229,51 @@ void CanvasView::draw_element(ImDrawList* dl, const Element& element, bool highl
   }
 }
 
-void CanvasView::draw_document(ImDrawList* dl, const std::vector<Element>& elements) {
+void CanvasView::draw_picture(ImDrawList* dl) {
+  const std::vector<Element>& elements = doc_.image().children;
+  const bool dragging = drag_ == Drag::moving || drag_ == Drag::resizing || drag_ == Drag::vertex;
+  if (!cache_ || !cache_->usable()) {
+    draw_page(dl);
+    draw_document(dl, elements);
+    return;
+  }
+  CanvasCacheKey key;
+  key.change = dragging ? drag_base_change_ : doc_.change_count();
+  key.px_per_mm = view_.px_per_mm();
+  const Point2Px origin = view_.page_origin_px();
+  key.origin_x_px = origin.x;
+  key.origin_y_px = origin.y;
+  key.width_px = static_cast<int>(canvas_w_);
+  key.height_px = static_cast<int>(canvas_h_);
+  key.grid = show_grid_;
+  if (dragging) key.left_out = doc_.selection();  // drawn live below, on top of the rest
+  if (playback_.on()) {
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      if (!std::holds_alternative<Group>(elements[i].body) && playback_.contacted(elements[i])) key.highlighted.push_back(i);
+    }
+  }
+  if (ImDrawList* picture = cache_->begin(key, canvas_x_, canvas_y_)) {
+    picture->AddRectFilled(ImVec2(canvas_x_, canvas_y_), ImVec2(canvas_x_ + canvas_w_, canvas_y_ + canvas_h_),
+                           IM_COL32(60, 60, 66, 255));
+    draw_page(picture);
+    draw_document(picture, elements, key.left_out);
+    cache_->end();
+  }
+  cache_->show(dl);
+  for (const std::string& id : key.left_out) {
+    if (const Element* e = doc_.find(id)) draw_element(dl, *e, false);
+  }
+}
+
+void CanvasView::draw_document(ImDrawList* dl, const std::vector<Element>& elements,
+                               const std::vector<std::string>& left_out) {
   const Point2Mm view_min = view_.to_mm({canvas_x_, canvas_y_});
   const Point2Mm view_max = view_.to_mm({canvas_x_ + canvas_w_, canvas_y_ + canvas_h_});
   const RectMm visible{view_min.x_mm, view_min.y_mm, view_max.x_mm, view_max.y_mm};
   for (const Element& e : elements) {
     const auto b = element_bounds(e);
     if (!b || !b->intersects(visible)) continue;
+    if (!left_out.empty() && std::find(left_out.begin(), left_out.end(), e.id) != left_out.end()) continue;
     const bool group = std::holds_alternative<Group>(e.body);
     draw_element(dl, e, !group && playback_.contacted(e));
   }
@@ -257,6 +296,7 @@ void CanvasView::draw_selection(ImDrawList* dl) const {
                   IM_COL32(40, 120, 255, 255));
     }
   }
+  draw_vertex_handles(dl);
 }
 
 }  // namespace vimg::editor

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "editor/canvas_cache.hpp"
 #include "editor/core/layout_log.hpp"
 #include "editor/playback.hpp"
 
@@ -20,6 +21,14 @@ constexpr ImU32 kDrawing = IM_COL32(40, 120, 255, 255);
 
 CanvasView::CanvasView(DocumentEditor& doc, const Playback& playback, Notices& notices, LayoutLog& layout)
     : doc_(doc), playback_(playback), notices_(notices), layout_(layout) {}
+
+CanvasView::~CanvasView() = default;
+
+void CanvasView::set_renderer(SDL_Renderer* renderer) {
+  cache_ = renderer ? std::make_unique<CanvasCache>(renderer) : nullptr;
+}
+
+std::uint64_t CanvasView::cache_builds() const { return cache_ ? cache_->builds() : 0; }
 
 void CanvasView::set_density(double px_per_mm, double zoom) {
   view_ = Viewport(px_per_mm);
@@ -60,6 +69,8 @@ bool CanvasView::handle_key(int sdl_keycode) {
     case SDLK_ESCAPE:
       if (!polygon_points_.empty()) {
         polygon_points_.clear();
+      } else if (vertex_index_) {
+        vertex_index_.reset();
       } else if (drag_ == Drag::none) {
         doc_.clear_selection();
       }
@@ -180,8 +191,7 @@ void CanvasView::draw(float x, float y, float w, float h) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(60, 60, 66, 255));
   dl->PushClipRect(ImVec2(canvas_x_, canvas_y_), ImVec2(canvas_x_ + canvas_w_, canvas_y_ + canvas_h_), true);
-  draw_page(dl);
-  draw_document(dl, doc_.image().children);
+  draw_picture(dl);
   draw_selection(dl);
   playback_.draw_overlay(dl, view_);
 

@@ -86,11 +86,13 @@ bool EditorApp::init_window() {
   ImGui::GetStyle().WindowRounding = 0.0f;
   ImGui_ImplSDL2_InitForSDLRenderer(window_);
   ImGui_ImplSDLRenderer_Init(renderer_);
+  canvas_.set_renderer(renderer_);
   return true;
 }
 
 void EditorApp::shutdown_window() {
   playback_.set_on(false, session_.editor().image());
+  canvas_.set_renderer(nullptr);  // its texture goes before the renderer
   if (ImGui::GetCurrentContext()) {
     ImGui_ImplSDLRenderer_Shutdown();
     ImGui_ImplSDL2_Shutdown();
@@ -270,7 +272,9 @@ void EditorApp::handle_shortcut(const SDL_KeyboardEvent& key) {
   const double step = shift ? 10.0 : alt ? 0.1 : 1.0;
   switch (k) {
     case SDLK_DELETE:
-    case SDLK_BACKSPACE: doc.delete_selection(); break;
+    case SDLK_BACKSPACE:
+      if (!canvas_.delete_chosen_vertex()) doc.delete_selection();
+      break;
     case SDLK_LEFT: doc.move_selection(-step, 0); break;
     case SDLK_RIGHT: doc.move_selection(step, 0); break;
     case SDLK_UP: doc.move_selection(0, -step); break;

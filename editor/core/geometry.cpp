@@ -51,7 +51,13 @@ bool surface_contains(const Surface& s, Point2Mm p, double tol) {
       return u * u + v * v <= 1.0;
     }
     case SurfaceShape::polygon:
-      return s.points.size() >= 3 && polygon_contains(s.points, p);
+      if (s.points.size() < 3) return false;
+      if (polygon_contains(s.points, p)) return true;
+      // On the outline within the slack (the rect and ellipse grow by it too).
+      for (std::size_t i = 0, j = s.points.size() - 1; tol > 0 && i < s.points.size(); j = i++) {
+        if (distance_to_segment_mm(p, s.points[j], s.points[i]) <= tol) return true;
+      }
+      return false;
   }
   return false;
 }

@@ -20,86 +20,11 @@ art=$(realpath "$art")
 export HOME="$art/home" XDG_CONFIG_HOME="$art/home/.config" XDG_STATE_HOME="$art/home/.state"
 export SDL_AUDIODRIVER=dummy
 
-# A display of our own.
+# A display of our own, and the driver functions (start, click_mm, drag_mm, key, save_as, ...).
 source "$(dirname "$0")/../xvfb_display.sh"
-editor_pid=""
-cleanup() {
-  if [ -n "$editor_pid" ]; then kill -9 "$editor_pid" 2>/dev/null || true; fi
-  stop_xvfb
-}
+source "$here/gui_driver.sh"
 trap cleanup EXIT
 start_xvfb 91 160 1400x900x24 "$art/xvfb.log"
-
-WX=0 WY=0 OX=0 OY=0 PPM=1
-# start NAME ARGS...: launches the editor, waits for its window and its canvas layout.
-start() {
-  local name=$1
-  shift
-  "$editor" --print-layout --zoom 2 "$@" >"$art/$name.layout" 2>"$art/$name.log" &
-  editor_pid=$!
-  prompts=0
-  # Generous: on a loaded CI machine a debug build can take many seconds to show its first frame.
-  for _ in $(seq 600); do
-    grep -q '^layout window' "$art/$name.layout" && grep -q '^layout page_origin' "$art/$name.layout" && break
-    kill -0 "$editor_pid" 2>/dev/null || { echo "FAIL: the editor exited"; cat "$art/$name.log"; exit 1; }
-    sleep 0.1
-  done
-  grep -q '^layout page_origin' "$art/$name.layout" || { echo "FAIL: the editor shows no canvas"; exit 1; }
-  WX=$(grep '^layout window' "$art/$name.layout" | tail -1 | awk '{print $3}')
-  WY=$(grep '^layout window' "$art/$name.layout" | tail -1 | awk '{print $4}')
-  local line
-  line=$(grep '^layout page_origin' "$art/$name.layout" | tail -1)
-  PPM=$(echo "$line" | sed 's/.*ppm\([0-9.]*\) .*/\1/')
-  OX=$(echo "$line" | awk '{print $3}')
-  OY=$(echo "$line" | awk '{print $4}')
-  sleep 0.5
-}
-px() { awk -v w="$WX" -v o="$OX" -v p="$PPM" -v m="$1" 'BEGIN { printf "%d", w + o + m * p + 0.5 }'; }
-py() { awk -v w="$WY" -v o="$OY" -v p="$PPM" -v m="$1" 'BEGIN { printf "%d", w + o + m * p + 0.5 }'; }
-move_mm() { xdotool mousemove "$(px "$1")" "$(py "$2")"; }
-click_mm() { move_mm "$1" "$2"; sleep 0.15; xdotool click 1; sleep 0.2; }
-drag_mm() {
-  move_mm "$1" "$2"; sleep 0.15
-  xdotool mousedown 1; sleep 0.15
-  move_mm "$(awk -v a="$1" -v b="$3" 'BEGIN{print (a+b)/2}')" "$(awk -v a="$2" -v b="$4" 'BEGIN{print (a+b)/2}')"; sleep 0.1
-  move_mm "$3" "$4"; sleep 0.15
-  xdotool mouseup 1; sleep 0.2
-}
-key() { xdotool key "$@"; sleep 0.25; }
-# widget NAME: clicks a widget whose layout the editor printed.
-widget() {
-  local line=""
-  for _ in $(seq 200); do
-    line=$(grep "^layout $1 " "$art/$current.layout" | tail -1 || true)
-    [ -n "$line" ] && break
-    sleep 0.1
-  done
-  [ -n "$line" ] || { echo "FAIL: widget $1 not shown"; exit 1; }
-  local x y w h
-  read -r _ _ x y w h <<<"$line"
-  xdotool mousemove $((WX + x + w / 2)) $((WY + y + h / 2)); sleep 0.15
-  xdotool click 1; sleep 0.25
-}
-prompts=0
-save_as() {
-  prompts=$((prompts + 1))
-  key ctrl+shift+s
-  for _ in $(seq 300); do grep -q "^layout file_prompt$prompts " "$art/$current.layout" && break; sleep 0.1; done
-  grep -q "^layout file_prompt$prompts " "$art/$current.layout" || { echo "FAIL: no file prompt"; shot no-prompt; exit 1; }
-  key ctrl+a
-  xdotool type --delay 20 "$1"; sleep 0.2
-  key Return
-  for _ in $(seq 200); do [ -s "$1" ] && return 0; sleep 0.1; done
-  echo "FAIL: $1 was not saved"; cat "$art/$current.log"; exit 1
-}
-shot() { import -window root "$art/$1.png"; }
-quit_editor() {
-  key ctrl+q
-  for _ in $(seq 100); do kill -0 "$editor_pid" 2>/dev/null || break; sleep 0.1; done
-  if kill -0 "$editor_pid" 2>/dev/null; then echo "FAIL: the editor did not quit"; shot "$current-not-quitting"; exit 1; fi
-  wait "$editor_pid" || { echo "FAIL: the editor exited with $?"; cat "$art/$current.log"; exit 1; }
-  editor_pid=""
-}
 
 echo "== draw one of each primitive, edit, undo/redo, save, reopen"
 current=draw

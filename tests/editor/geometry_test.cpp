@@ -111,3 +111,24 @@ TEST(Viewport, GridStepIsAtLeastTheMinimumSpacing) {
 
 }  // namespace
 }  // namespace vimg::editor
+
+namespace vimg::editor {
+namespace {
+
+// A click on a polygon's outline within the slack hits it, as it does a rect's or an ellipse's;
+// without slack only the inside counts (the player's contact test).
+TEST(Geometry, APolygonIsHitOnItsOutlineWithinTheTolerance) {
+  Surface s;
+  s.shape = SurfaceShape::polygon;
+  s.points = {{20, 20}, {60, 20}, {60, 60}, {20, 60}};
+  Element e;
+  e.body = s;
+  EXPECT_TRUE(element_contains(e, {40, 60.4}, 0.5));
+  EXPECT_TRUE(element_contains(e, {19.6, 40}, 0.5));
+  EXPECT_FALSE(element_contains(e, {40, 61}, 0.5));
+  EXPECT_FALSE(element_contains(e, {40, 60.4}, 0.0));
+  EXPECT_TRUE(element_contains(e, {40, 40}, 0.0));
+}
+
+}  // namespace
+}  // namespace vimg::editor

@@ -7,6 +7,10 @@ usage:
   gui_check.py pulse WAV GESTURE.csv X Y R
                                         the drive is on while the finger is within R of (X, Y)
   gui_check.py recovered FILE.vimg X Y  FILE has a dot near (X, Y) mm and the smiley's elements
+  gui_check.py points FILE.vimg ID "X,Y X,Y ..."
+                                        element ID's points (a polygon's vertices or a line's ends)
+                                        are these, in order, within 0.6 mm
+  gui_check.py box FILE.vimg ID X Y W H  rect SURFACE ID is this box, within 1e-6 mm
 """
 import math
 import struct
@@ -173,6 +177,30 @@ def check_recovered(path, x, y):
     print(f"ok: {path} holds the recovered edit")
 
 
+def check_points(path, ident, want_text):
+    want = [tuple(map(float, p.split(","))) for p in want_text.split()]
+    el = next((e for e in elements(path) if e.get("id") == ident), None)
+    if el is None:
+        fail(f"{path}: no element {ident}")
+    if el.tag == "line":
+        got = [(float(el.get("x1")), float(el.get("y1"))), (float(el.get("x2")), float(el.get("y2")))]
+    else:
+        got = [tuple(map(float, p.split(","))) for p in el.get("points").split()]
+    if len(got) != len(want) or any(abs(g[0] - w[0]) > 0.6 or abs(g[1] - w[1]) > 0.6 for g, w in zip(got, want)):
+        fail(f"{path}: {ident} has points {got}, want {want}")
+    print(f"ok: {path}: {ident} has the points {want}")
+
+
+def check_box(path, ident, want):
+    el = next((e for e in elements(path) if e.get("id") == ident), None)
+    if el is None:
+        fail(f"{path}: no element {ident}")
+    got = [float(el.get(k)) for k in ("x", "y", "width", "height")]
+    if any(abs(g - w) > 1e-6 for g, w in zip(got, want)):
+        fail(f"{path}: {ident} is {got}, want {want}")
+    print(f"ok: {path}: {ident} is {want}")
+
+
 def main(argv):
     if len(argv) < 2:
         fail(__doc__)
@@ -183,6 +211,10 @@ def main(argv):
         check_same(argv[2], argv[3])
     elif cmd == "pulse":
         check_pulse(argv[2], argv[3], float(argv[4]), float(argv[5]), float(argv[6]))
+    elif cmd == "points":
+        check_points(argv[2], argv[3], argv[4])
+    elif cmd == "box":
+        check_box(argv[2], argv[3], [float(v) for v in argv[4:8]])
     elif cmd == "recovered":
         check_recovered(argv[2], float(argv[3]), float(argv[4]))
     else:
