@@ -13,6 +13,7 @@
 #include "hal/actuator_profile.hpp"
 #include "hal/drv2605l_trace_sink.hpp"
 #include "hal/rest_on_exit.hpp"
+#include "player/clip_export/clip_sink.hpp"
 #include "player/drive_sinks.hpp"
 #include "player/gesture.hpp"
 #include "player/offline_render.hpp"
@@ -45,7 +46,8 @@ struct RenderArgs {
 // The checks CLI11 cannot express; returns an exit code on a usage error.
 std::optional<int> check_render_args(const RenderArgs& a) {
   const std::string ext = lower_extension(a.out);
-  if (ext != ".wav" && ext != ".csv") return usage_error("vimg render", "--out must end in .wav or .csv: '" + a.out + "'");
+  if (ext != ".wav" && ext != ".csv" && !is_clip_extension(a.out))
+    return usage_error("vimg render", "--out must end in .wav, .csv, .ahap or .haptic: '" + a.out + "'");
   if (!a.register_trace.empty() && a.actuator.empty())
     return usage_error("vimg render", "--register-trace needs --actuator with a drv2605l profile");
   if (!a.register_trace.empty() && a.signal == "acceleration")
@@ -86,6 +88,9 @@ int run_render(const RenderArgs& a) {
   std::unique_ptr<FileSink> sink;
   if (lower_extension(a.out) == ".wav") {
     sink = std::make_unique<WavSink>(a.out);
+  } else if (is_clip_extension(a.out)) {  // a phone haptics clip of the drive (docs/export.md)
+    sink = std::make_unique<ClipSink>(a.out, ClipMetadata{std::string("vimg ") + cmdline::version(), a.image, "",
+                                                          "the gesture " + a.gesture + " over " + a.image, {"vibroimage"}});
   } else {
     sink = std::make_unique<CsvSink>(a.out, a.signal);
   }
@@ -138,7 +143,7 @@ void add_render_command(CLI::App& vimg, int& exit_code) {
   auto a = std::make_shared<RenderArgs>();
   sub->add_option("IMAGE", a->image, "a .vimg or .png image")->required();
   sub->add_option("--gesture", a->gesture, "the gesture CSV (time_s,finger,x_mm,y_mm,pressure,phase)")->required();
-  sub->add_option("--out", a->out, "OUT.wav (mono 32-bit float) or OUT.csv (time_s,drive or time_s,acceleration), written atomically")->required();
+  sub->add_option("--out", a->out, "OUT.wav (mono 32-bit float), OUT.csv (time_s,drive or time_s,acceleration), or a phone clip OUT.ahap (Apple) or OUT.haptic (Meta), written atomically")->required();
   sub->add_option("--rate", a->rate_hz, "output sample rate in Hz")->check(CLI::Range(1, 48000));
   sub->add_option("--actuator", a->actuator, "actuator profile (assets/profiles/*.xml); default: ideal, 175 Hz carrier");
   sub->add_option("--register-trace", a->register_trace, "DRV2605L register traffic as CSV (needs a drv2605l --actuator)");
