@@ -1,4 +1,6 @@
 // `vimg gesture (line|arc|circle) ... --out G.csv`: synthesises a gesture file from a path.
+// `vimg gesture import TRACE --out G.csv [--panel-mm WxH | --px-per-mm K]`: a touch recording
+// (evemu-record or Android getevent -lt text) as a gesture file.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +10,7 @@
 #include "cli/command.hpp"
 #include "player/gesture.hpp"
 #include "player/gesture_synth.hpp"
+#include "player/touch_trace_gesture.hpp"
 #include "storage/atomic_file.hpp"
 
 namespace vimg::cli {
@@ -57,11 +60,82 @@ int run_gesture(GestureArgs& a) {
   return kExitOk;
 }
 
+struct ImportArgs {
+  std::string trace, out, panel_mm;
+  double px_per_mm = 0.0;
+};
+
+// "W x H" with x, X, the sign × or a comma between two finite numbers.
+std::string panel_as_point(std::string text) {
+  for (const std::string sep : {"\xC3\x97", "x", "X"}) {
+    const std::size_t at = text.find(sep);
+    if (at != std::string::npos) return text.replace(at, sep.size(), ",");
+  }
+  return text;
+}
+
+int run_import(const ImportArgs& a) {
+  TouchMapping mapping;
+  if (!a.panel_mm.empty()) {
+    double w = 0.0, h = 0.0;
+    cmdline::parse_point_2d(panel_as_point(a.panel_mm), w, h);
+    mapping.panel_width_mm = w;
+    mapping.panel_height_mm = h;
+  }
+  if (a.px_per_mm > 0.0) mapping.units_per_mm = a.px_per_mm;
+  const TouchTraceParseResult trace = load_touch_trace(a.trace);
+  for (const auto& d : trace.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  if (!trace.trace) return kExitFailure;
+  const TraceGestureResult converted = trace_to_gesture(*trace.trace, mapping, a.trace);
+  if (!converted.usage_problem.empty()) return usage_error("vimg gesture import", converted.usage_problem);
+  for (const auto& e : converted.errors) std::fprintf(stderr, "%s\n", e.c_str());
+  if (!converted.gesture) return kExitFailure;
+  const std::string text = write_gesture_csv(*converted.gesture);
+  const GestureParseResult check = parse_gesture_csv(text, a.out);  // what is written must read back
+  if (!check.ok()) {
+    for (const auto& e : check.errors) std::fprintf(stderr, "%s\n", e.c_str());
+    return kExitFailure;
+  }
+  if (const auto error = write_file_atomically(a.out, text)) {
+    std::fprintf(stderr, "vimg gesture import: %s\n", error->c_str());
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+void add_gesture_import(CLI::App& gesture, int& exit_code) {
+  CLI::App* sub = gesture.add_subcommand(
+      "import", "a touch recording (evemu-record, or Android getevent -lt text) as a gesture file; "
+                "multi-touch protocol A or B, one finger per slot or contact");
+  auto a = std::make_shared<ImportArgs>();
+  sub->add_option("TRACE", a->trace, "the recording")->required();
+  sub->add_option("--out", a->out, "output gesture file (written atomically)")->required();
+  auto* panel = sub->add_option("--panel-mm", a->panel_mm,
+                                "the touch area in mm, WxH: the recording's axis ranges map onto it")
+                    ->check(CLI::Validator(
+                        [](std::string& input) -> std::string {
+                          double w = 0.0, h = 0.0;
+                          if (!cmdline::parse_point_2d(panel_as_point(input), w, h) || !(w > 0.0) || !(h > 0.0) ||
+                              w > kMaxGestureCoordinateMm || h > kMaxGestureCoordinateMm) {
+                            return "'" + input + "' is not WxH with two positive sizes in mm";
+                          }
+                          return {};
+                        },
+                        "WxH"));
+  sub->add_option("--px-per-mm", a->px_per_mm, "digitizer units per mm (instead of --panel-mm)")
+      ->check(cmdline::finite_in(1e-6, 1e9))
+      ->excludes(panel);
+  sub->footer("Without --panel-mm or --px-per-mm, the device's own resolution (evemu's Resolution) is used; "
+              "a recording without one needs either option. Times start at the recording's first event.");
+  sub->callback([a, &exit_code] { exit_code = run_import(*a); });
+}
+
 }  // namespace
 
 void add_gesture_command(CLI::App& vimg, int& exit_code) {
   CLI::App* gesture = vimg.add_subcommand("gesture", "synthesise a gesture file from a path at a given speed and event rate");
   gesture->require_subcommand(1);
+  add_gesture_import(*gesture, exit_code);
   gesture->footer("Angles: degrees, 0 along +x, increasing towards +y (y points down).");
   struct Kind {
     const char* name;
