@@ -10,26 +10,16 @@
 
 #include "primitives/actuator/actuator_chain.hpp"
 #include "primitives/actuator/actuator_model.hpp"
+#include "model_params.hpp"
 #include "sine_measure.hpp"
 
 namespace vimg {
 namespace {
 
-ResponseParams lra(double q = 10.0) {
-  ResponseParams p;
-  p.model = ResponseModel::lra;
-  p.resonance_hz = 175.0;
-  p.q = q;
-  return p;
-}
+using test::erm;
+using test::lra;
+using test::voice_coil;
 
-ResponseParams voice_coil() {
-  ResponseParams p;
-  p.model = ResponseModel::voice_coil;
-  p.low_hz = 50.0;
-  p.high_hz = 500.0;
-  return p;
-}
 
 std::vector<double> log_frequencies(double low_hz, double high_hz, int count) {
   std::vector<double> out;
@@ -73,10 +63,7 @@ TEST(ActuatorModel, PeakGainIsZeroDb) {
     }
   }
   // Corners an octave apart lose gain in the middle; the model scales it back.
-  ResponseParams narrow = voice_coil();
-  narrow.low_hz = 200.0;
-  narrow.high_hz = 400.0;
-  const ActuatorModel model(narrow, 8000.0);
+  const ActuatorModel model(voice_coil(200.0, 400.0), 8000.0);
   double peak = -1e9;
   for (const double f : log_frequencies(100.0, 800.0, 20000)) peak = std::max(peak, model.response_db(f));
   EXPECT_NEAR(peak, 0.0, 1e-4);
@@ -119,13 +106,9 @@ double crossing_time_s(const std::vector<double>& series, double level, bool ris
 }
 
 TEST(ActuatorModel, ErmSpeedLagsAStepWithItsSpinUpAndSpinDownTimeConstants) {
-  ResponseParams erm;
-  erm.model = ResponseModel::erm;
-  erm.resonance_hz = 200.0;
-  erm.spin_up_s = 0.030;
-  erm.spin_down_s = 0.045;
+  const ResponseParams params = erm(0.030, 0.045);
   const double rate = 8000.0;
-  ActuatorModel model(erm, rate);
+  ActuatorModel model(params, rate);
   std::vector<double> up, down;
   for (int n = 0; n < 4000; ++n) {
     model.process(1.0);
@@ -138,18 +121,15 @@ TEST(ActuatorModel, ErmSpeedLagsAStepWithItsSpinUpAndSpinDownTimeConstants) {
   // A first-order lag reaches 1 - 1/e of a step after one time constant, 1 - 1/e^3 after three
   // (a quarter sample: the interpolation between samples of an exponential).
   const double tolerance_s = 0.25 / rate;
-  EXPECT_NEAR(crossing_time_s(up, 1.0 - std::exp(-1.0), true, rate), erm.spin_up_s, tolerance_s);
-  EXPECT_NEAR(crossing_time_s(down, std::exp(-1.0), false, rate), erm.spin_down_s, tolerance_s);
-  EXPECT_NEAR(crossing_time_s(up, 1.0 - std::exp(-3.0), true, rate), 3.0 * erm.spin_up_s, tolerance_s);
+  EXPECT_NEAR(crossing_time_s(up, 1.0 - std::exp(-1.0), true, rate), params.spin_up_s, tolerance_s);
+  EXPECT_NEAR(crossing_time_s(down, std::exp(-1.0), false, rate), params.spin_down_s, tolerance_s);
+  EXPECT_NEAR(crossing_time_s(up, 1.0 - std::exp(-3.0), true, rate), 3.0 * params.spin_up_s, tolerance_s);
 }
 
 TEST(ActuatorModel, ErmVibratesAtItsRatedFrequencyWithAmplitudeTheSquareOfItsSpeed) {
-  ResponseParams erm;
-  erm.model = ResponseModel::erm;
-  erm.resonance_hz = 200.0;
   const double rate = 8000.0;
   for (const double drive : {1.0, 0.5}) {
-    ActuatorModel model(erm, rate);
+    ActuatorModel model(erm(0.030, 0.045, 200.0), rate);
     for (int n = 0; n < 8000; ++n) model.process(drive);  // 1 s: settled
     int rises = 0;
     double previous = model.process(drive);
@@ -166,11 +146,7 @@ TEST(ActuatorModel, ErmVibratesAtItsRatedFrequencyWithAmplitudeTheSquareOfItsSpe
 }
 
 TEST(ActuatorModel, ErmResponseIsTheFirstOrderLagOfTheMeanTimeConstant) {
-  ResponseParams erm;
-  erm.model = ResponseModel::erm;
-  erm.spin_up_s = 0.030;
-  erm.spin_down_s = 0.050;
-  const ActuatorModel model(erm, 48000.0);
+  const ActuatorModel model(erm(0.030, 0.050), 48000.0);
   const double tau = 0.040;
   for (const double f : {0.5, 2.0, 4.0, 10.0, 30.0}) {
     const double wt = 2.0 * std::numbers::pi * f * tau;

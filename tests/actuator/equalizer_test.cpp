@@ -7,18 +7,14 @@
 
 #include "primitives/actuator/actuator_chain.hpp"
 #include "primitives/actuator/equalizer.hpp"
+#include "model_params.hpp"
 #include "sine_measure.hpp"
 
 namespace vimg {
 namespace {
 
-ResponseParams lra(double q) {
-  ResponseParams p;
-  p.model = ResponseModel::lra;
-  p.resonance_hz = 175.0;
-  p.q = q;
-  return p;
-}
+using test::lra;
+
 
 TEST(Equalizer, NeverBoosts) {
   for (const double q : {2.0, 10.0, 40.0}) {
@@ -71,12 +67,8 @@ TEST(Equalizer, TheEqualizedDriveStaysWithinTheDriveLimit) {
 }
 
 TEST(Equalizer, IsTheIdentityWhereThereIsNothingToFlatten) {
-  ResponseParams voice_coil;
-  voice_coil.model = ResponseModel::voice_coil;
-  EXPECT_TRUE(Equalizer(voice_coil, 8000.0).is_identity());
-  ResponseParams erm;
-  erm.model = ResponseModel::erm;
-  EXPECT_TRUE(Equalizer(erm, 8000.0).is_identity());
+  EXPECT_TRUE(Equalizer(test::voice_coil(), 8000.0).is_identity());
+  EXPECT_TRUE(Equalizer(test::erm(0.030, 0.045), 8000.0).is_identity());
   EXPECT_TRUE(Equalizer(lra(kEqualizedQ), 8000.0).is_identity());
   // Without --equalize the drive goes through untouched.
   ActuatorChain drive_only(lra(10.0), 8000.0, OutputSignal::drive, false);

@@ -6,17 +6,13 @@
 
 #include "primitives/actuator/felt_band.hpp"
 #include "primitives/actuator/primitive_frequencies.hpp"
+#include "model_params.hpp"
 
 namespace vimg {
 namespace {
 
-ResponseParams lra(double q) {
-  ResponseParams p;
-  p.model = ResponseModel::lra;
-  p.resonance_hz = 175.0;
-  p.q = q;
-  return p;
-}
+using test::lra;
+
 
 // Where a resonator of quality q is `db` below its peak: |x - 1/x| = sqrt(10^(db/10) - 1) / q.
 std::pair<double, double> resonator_edges(double f0, double q, double db) {
@@ -65,11 +61,7 @@ TEST(FeltBand, NothingIsWeakOnTheIdealActuator) {
 }
 
 TEST(FeltBand, ErmBandRunsFromDcToWhereItsLagIsTenDbDown) {
-  ResponseParams erm;
-  erm.model = ResponseModel::erm;
-  erm.spin_up_s = 0.030;
-  erm.spin_down_s = 0.050;
-  const ActuatorModel model(erm, 48000.0);
+  const ActuatorModel model(test::erm(0.030, 0.050), 48000.0);
   const FeltBand band(model);
   EXPECT_EQ(band.felt().low_hz, 0.0);
   EXPECT_EQ(band.peak_hz(), 0.0);
