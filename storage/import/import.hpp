@@ -11,6 +11,7 @@
 
 #include "primitives/image.hpp"
 #include "storage/diagnostic.hpp"
+#include "storage/limits.hpp"
 
 namespace vimg {
 
@@ -23,6 +24,7 @@ struct ImportOptions {
   std::optional<double> width_mm;
   int levels = 4;                   // Picture: grey levels, 1 .. kMaxPictureLevels
   double simplify_mm = 0.1;         // Picture: outlines simplified to within this
+  double max_pixels = kMaxPngPixels;  // Picture: pixels decoded at most (docs/limits.md)
 };
 
 struct ImportResult {

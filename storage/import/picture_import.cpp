@@ -72,7 +72,7 @@ class PictureImporter {
     if (options_.levels < 1 || options_.levels > kMaxPictureLevels) {
       return fail("levels must be 1 .. " + std::to_string(kMaxPictureLevels));
     }
-    const DecodedPng png = decode_png_rgba(bytes, kMaxPngPixels);
+    const DecodedPng png = decode_png_rgba(bytes, std::min(options_.max_pixels, kMaxPngPixels));
     if (!png.error.empty()) return fail("cannot import the picture: " + png.error);
     if (png.width <= 0 || png.height <= 0) return fail("the picture has no pixels");
     const double mm_per_px = *options_.width_mm / png.width;

@@ -169,9 +169,41 @@ struct Converter {
 
 }  // namespace
 
+namespace {
+
+// Coordinates a primitive may have: far beyond any canvas, yet finite after any arithmetic.
+constexpr double kMaxCoordinateMm = 1e9;
+
+bool in_range(double v) { return std::isfinite(v) && std::fabs(v) <= kMaxCoordinateMm; }
+
+bool in_range(const Element& e) {
+  if (const auto* d = std::get_if<Dot>(&e.body)) return in_range(d->x_mm) && in_range(d->y_mm) && in_range(d->radius_mm);
+  if (const auto* l = std::get_if<Line>(&e.body)) {
+    return in_range(l->x1_mm) && in_range(l->y1_mm) && in_range(l->x2_mm) && in_range(l->y2_mm) && in_range(l->width_mm);
+  }
+  if (const auto* s = std::get_if<Surface>(&e.body)) {
+    for (const double v : {s->x_mm, s->y_mm, s->width_mm, s->height_mm, s->cx_mm, s->cy_mm, s->rx_mm, s->ry_mm}) {
+      if (!in_range(v)) return false;
+    }
+    for (const Point2Mm& p : s->points) {
+      if (!in_range(p.x_mm) || !in_range(p.y_mm)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 ShapeOutput convert_shape(const ShapeGeometry& geometry, const ShapeSettings& settings) {
   Converter c{geometry, settings, {}, 0};
   c.run();
+  for (const Element& e : c.out.primitives) {
+    if (!in_range(e)) {
+      c.out.primitives.clear();
+      c.out.warnings.push_back("has coordinates beyond 1e9 mm (or not finite) after its transforms: not imported");
+      break;
+    }
+  }
   return std::move(c.out);
 }
 
