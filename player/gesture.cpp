@@ -7,6 +7,7 @@
 #include <map>
 #include <system_error>
 
+#include "storage/text_trim.hpp"
 #include "storage/diagnostic.hpp"
 #include "storage/limits.hpp"
 #include "storage/read_file.hpp"
@@ -15,22 +16,16 @@ namespace vimg {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
 std::vector<std::string_view> split_fields(std::string_view line) {
   std::vector<std::string_view> fields;
   std::size_t start = 0;
   for (;;) {
     const std::size_t comma = line.find(',', start);
     if (comma == std::string_view::npos) {
-      fields.push_back(trim(line.substr(start)));
+      fields.push_back(trim_blanks(line.substr(start)));
       return fields;
     }
-    fields.push_back(trim(line.substr(start, comma - start)));
+    fields.push_back(trim_blanks(line.substr(start, comma - start)));
     start = comma + 1;
   }
 }
@@ -108,7 +103,7 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
   while (pos < text.size()) {
     std::size_t end = text.find('\n', pos);
     if (end == std::string_view::npos) end = text.size();
-    const std::string_view line = trim(text.substr(pos, end - pos));
+    const std::string_view line = trim_blanks(text.substr(pos, end - pos));
     pos = end + 1;
     ++line_no;
     if (result.errors.size() >= 50) break;

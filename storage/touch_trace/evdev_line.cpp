@@ -5,15 +5,10 @@
 #include <vector>
 
 #include "storage/diagnostic.hpp"
+#include "storage/text_trim.hpp"
 
 namespace vimg {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
 
 std::vector<std::string_view> words(std::string_view s) {
   std::vector<std::string_view> out;
@@ -92,7 +87,7 @@ std::string quoted(std::string_view s) { return "'" + escape_input(s) + "'"; }
 }  // namespace
 
 EvdevLine EvdevLineReader::read(std::string_view raw) {
-  const std::string_view line = trim(raw);
+  const std::string_view line = trim_blanks(raw);
   if (line.empty()) return {};
   if (line.starts_with("E:")) return read_evemu_event(line.substr(2));
   if (line.starts_with("[")) return read_getevent(line);
@@ -123,17 +118,17 @@ EvdevLine EvdevLineReader::read(std::string_view raw) {
   if (const std::size_t colon = line.find(": value "); colon != std::string_view::npos) {
     std::string_view name = line;
     if (name.starts_with("ABS (0003):")) name.remove_prefix(11);
-    name = trim(name.substr(0, name.find(':')));
+    name = trim_blanks(name.substr(0, name.find(':')));
     const auto code = type_or_code(name, code_names());
     const auto min_at = line.find("min "), max_at = line.find("max ");
     if (!code || *code < 0 || min_at == std::string_view::npos || max_at == std::string_view::npos) return {};
-    const auto field = [&](std::size_t at) { return trim(line.substr(at + 4, line.find(',', at) - at - 4)); };
+    const auto field = [&](std::size_t at) { return trim_blanks(line.substr(at + 4, line.find(',', at) - at - 4)); };
     const auto min = number<std::int64_t>(field(min_at), 10), max = number<std::int64_t>(field(max_at), 10);
     const std::size_t res_at = line.find("resolution ");
     if (!min || !max) return bad("bad axis description " + quoted(line));
     EvdevLine l;
     l.kind = EvdevLine::Kind::axis;
-    l.axis = {*code, *min, *max, res_at == std::string_view::npos ? 0 : number<std::int64_t>(trim(line.substr(res_at + 11)), 10).value_or(0)};
+    l.axis = {*code, *min, *max, res_at == std::string_view::npos ? 0 : number<std::int64_t>(trim_blanks(line.substr(res_at + 11)), 10).value_or(0)};
     return l;
   }
   return bad("expected an evemu event 'E: seconds type code value' or a getevent line '[seconds] device: type code value', got " +
@@ -163,8 +158,8 @@ EvdevLine EvdevLineReader::read_getevent(std::string_view line) const {
   if (close == std::string_view::npos) return bad("a getevent line starts with '[seconds]'");
   EvdevLine l;
   l.kind = EvdevLine::Kind::event;
-  if (!timestamp(trim(line.substr(1, close - 1)), l.event)) return bad("bad time " + quoted(line.substr(0, close + 1)));
-  std::string_view rest = trim(line.substr(close + 1));
+  if (!timestamp(trim_blanks(line.substr(1, close - 1)), l.event)) return bad("bad time " + quoted(line.substr(0, close + 1)));
+  std::string_view rest = trim_blanks(line.substr(close + 1));
   auto w = words(rest);
   if (!w.empty() && w[0].back() == ':') {
     l.event.device = std::string(w[0].substr(0, w[0].size() - 1));

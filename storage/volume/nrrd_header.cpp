@@ -4,15 +4,10 @@
 #include <sstream>
 
 #include "storage/limits.hpp"
+#include "storage/text_trim.hpp"
 
 namespace vimg {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
 
 // NRRD allows some field names without their blank ("byteskip"); compare without blanks.
 std::string squeeze(std::string_view name) {
@@ -78,7 +73,7 @@ std::optional<NrrdHeaderScan> scan_nrrd_header(std::string_view bytes, Diagnosti
       failed = true;
       continue;
     }
-    NrrdHeaderField field{std::string(line.substr(0, colon)), std::string(trim(line.substr(colon + 2))), line_number};
+    NrrdHeaderField field{std::string(line.substr(0, colon)), std::string(trim_blanks(line.substr(colon + 2))), line_number};
     if (const int first = scan.line_of(field.name)) {
       list.error(line_number, "field " + in_quotes(field.name) + " given twice (first on line " + std::to_string(first) + ")");
       failed = true;
