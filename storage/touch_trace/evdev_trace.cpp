@@ -88,6 +88,10 @@ class TraceBuilder {
 
   bool clock(const EvdevEvent& e, int line) {
     if (!first_) first_ = e;
+    if (e.seconds < first_->seconds - 1) {
+      list_.error(line, "time goes backwards (before the first event)");
+      return false;
+    }
     if (e.seconds - first_->seconds > static_cast<std::int64_t>(kMaxGestureDurationS) + 1) {
       list_.error(line, "the recording is longer than " + std::to_string(static_cast<int>(kMaxGestureDurationS)) +
                             " s (limit " + std::to_string(static_cast<int>(kMaxGestureDurationS)) + ")");

@@ -1,7 +1,10 @@
 #include "storage/volume/nrrd_header.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "storage/limits.hpp"
 #include "storage/text_trim.hpp"
@@ -18,7 +21,60 @@ std::string squeeze(std::string_view name) {
   return s;
 }
 
+// The number of "quoted" strings (with \" escapes) a value lists, or -1 when it is not such a list.
+int count_quoted(std::string_view v) {
+  int count = 0;
+  std::size_t i = 0;
+  for (;;) {
+    while (i < v.size() && (v[i] == ' ' || v[i] == '\t')) ++i;
+    if (i == v.size()) return count;
+    if (v[i] != '"') return -1;
+    for (++i; i < v.size() && v[i] != '"'; ++i) {
+      if (v[i] == '\\') ++i;
+    }
+    if (i >= v.size()) return -1;
+    ++i;
+    ++count;
+  }
+}
+
+// The dimension of a named NRRD space ("right-anterior-superior", "RAST", ...), 0 when unknown.
+int space_dimension_of(std::string_view name) {
+  static const std::vector<std::pair<std::string_view, int>> spaces = {
+      {"right-anterior-superior", 3}, {"RAS", 3}, {"left-anterior-superior", 3}, {"LAS", 3},
+      {"left-posterior-superior", 3}, {"LPS", 3}, {"right-anterior-superior-time", 4}, {"RAST", 4},
+      {"left-anterior-superior-time", 4}, {"LAST", 4}, {"left-posterior-superior-time", 4}, {"LPST", 4},
+      {"scanner-xyz", 3}, {"scanner-xyz-time", 4}, {"3D-right-handed", 3}, {"3D-left-handed", 3},
+      {"3D-right-handed-time", 4}, {"3D-left-handed-time", 4}};
+  for (const auto& [n, d] : spaces) {
+    if (n == name) return d;
+  }
+  return 0;
+}
+
 std::string in_quotes(std::string_view input) { return "'" + escape_input(input) + "'"; }
+
+// teem leaks memory when a list of quoted strings is unterminated or, for `space units`, longer
+// than the space; such values are refused here, before teem reads them.
+void check_quoted_lists(const NrrdHeaderScan& scan, DiagnosticList& list, bool& failed) {
+  int space_dim = 0;
+  for (const auto& f : scan.fields) {
+    if (f.name == "space dimension") space_dim = std::atoi(f.value.c_str());
+    if (f.name == "space") space_dim = space_dimension_of(f.value);
+  }
+  for (const auto& f : scan.fields) {
+    if (f.name != "labels" && f.name != "units" && f.name != "space units") continue;
+    const int n = count_quoted(f.value);
+    if (n < 0) {
+      list.error(f.line, "field " + in_quotes(f.name) + ": expected a list of \"quoted\" strings");
+      failed = true;
+    } else if (f.name == "space units" && space_dim > 0 && n != space_dim) {
+      list.error(f.line, "field 'space units': " + std::to_string(n) + " units for a space of " + std::to_string(space_dim) +
+                             " dimensions");
+      failed = true;
+    }
+  }
+}
 
 }  // namespace
 
@@ -114,6 +170,7 @@ std::optional<NrrdHeaderScan> scan_nrrd_header(std::string_view bytes, Diagnosti
     list.error(scan.data_line, "a header with 'data file' may not be followed by data");
     failed = true;
   }
+  check_quoted_lists(scan, list, failed);
   if (failed) return std::nullopt;
   scan.teem_header += "\n";
   return scan;

@@ -147,6 +147,7 @@ TEST(TouchTrace, BadInputNamesFileAndLine) {
       {"[ 1.0] /dev/input/event1: EV_ABS ABS_MT_POSITION_X zz\n", "t:1: error: bad value 'zz'"},
       {down + "E: -1.0 0000 0000 0\n", "t:5: error: bad time"},
       {"E: 5.0 0003 0035 1\nE: 4.0 0000 0000 0\n", "t:2: error: time goes backwards"},
+      {"E: 133048000000000.0 0003 0035 1\nE: 0.0 0000 0000 0\n", "t:2: error: time goes backwards"},  // found by the fuzzer
       {down + "E: 700.0 0000 0000 0\n", "t:5: error: the recording is longer than 600 s (limit 600)"},
       {"E: 0.0 0003 002f 64\n", "t:1: error: slot 64 is beyond"},
       {down + "E: 0.1 0003 0035 1\nE: 0.1 0000 0002 0\n", "t:6: error: the recording mixes multi-touch protocols A"},

@@ -93,6 +93,10 @@ TEST(Nrrd, HeaderErrorsNameFileAndLine) {
       {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 1 1\nencoding: raw\n", "bad.nrrd:5: error: the header does not end"},
       {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 100000 100000 100000\nencoding: raw\n\n", "bad.nrrd:4: error: the volume has more than"},
       {"NRRD0004\ntype: uchar\ndimension: 3\nline skip: 2\nsizes: 1 1 1\nencoding: raw\n\n\x01", "bad.nrrd:8: error: hit EOF skipping line 1 of 2"},
+      // Lists teem would leak memory on (found by the fuzzer): refused before teem reads them.
+      {"NRRD0004\ntype: uchar\ndimension: 3\nspace dimension: 3\nspace units: \"mm\n" + ok_tail, "bad.nrrd:5: error: field 'space units': expected a list of \"quoted\" strings"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nspace: RAS\nspace units: \"mm\" \"mm\" \"mm\" \"mm\"\n" + ok_tail, "bad.nrrd:5: error: field 'space units': 4 units for a space of 3 dimensions"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nlabels: \"x\" \"y\n" + ok_tail, "bad.nrrd:4: error: field 'labels': expected a list"},
   };
   for (const auto& c : cases) {
     const NrrdLoadResult r = parse_nrrd(c.text, "bad.nrrd");
