@@ -65,6 +65,11 @@ inline constexpr double kMaxProbeCoordinateMm = 10'000.0;  // |x_mm|, |y_mm|, |z
 inline constexpr std::size_t kMaxProbeRenderRows =
     static_cast<std::size_t>(kMaxProbePathDurationS * kMaxDeviceRateHz) + 1;
 
+// --- Import (storage/import, docs/import.md) --------------------------------------------------------
+inline constexpr int kMaxPictureLevels = 16;                // grey levels of a picture import
+inline constexpr double kMaxImportCoordinateMm = 1e9;       // |coordinate| of an SVG shape after its transforms
+inline constexpr double kMaxPictureContainmentTests = 4e8;  // outline edges visited placing a picture's holes
+
 // --- Messages ----------------------------------------------------------------------------------------
 inline constexpr std::size_t kMaxQuotedInputBytes = 64;  // input quoted in a message, before "..."
 inline constexpr std::size_t kMaxMessageBytes = 512;     // one diagnostic's message text

@@ -63,7 +63,7 @@ std::string write_ahap(const HapticClip& clip) {
   JsonWriter w;
   w.begin_object();
   w.key("Version");
-  w.number(1.0);
+  w.number_text("1.0");  // as Apple's AHAP samples write it
   w.key("Metadata");
   w.begin_object();
   w.key("Project");

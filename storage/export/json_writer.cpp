@@ -118,6 +118,11 @@ void JsonWriter::integer(long long value) {
   out_ += std::to_string(value);
 }
 
+void JsonWriter::number_text(std::string_view json_number) {
+  before_value();
+  out_.append(json_number);
+}
+
 std::string JsonWriter::take() {
   std::string out = std::move(out_);
   out += '\n';

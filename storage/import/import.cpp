@@ -52,6 +52,7 @@ ImportResult import_file(const std::filesystem::path& path, const ImportOptions&
   } else {
     if (!looks_like_png(*read.bytes)) return failure(name, "is not a PNG file (no PNG signature)");
     const PngText text = read_png_text(*read.bytes);
+    if (!text.error.empty()) return failure(name, (text.damaged ? "damaged PNG: " : "") + text.error);
     if (text.xml) {  // already a vibroimage: opened as one
       const LoadResult loaded = parse_image_xml(*text.xml, name);
       result.image = loaded.image;

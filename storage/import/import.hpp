@@ -22,7 +22,7 @@ struct ImportOptions {
   double dot_max_radius_mm = 2.0;   // SVG: circles up to this radius become DOTs
   // Picture: the width of the canvas in mm (required); the height follows the aspect ratio.
   std::optional<double> width_mm;
-  int levels = 4;                   // Picture: grey levels, 1 .. kMaxPictureLevels
+  int levels = 4;                   // Picture: grey levels, 1 .. kMaxPictureLevels (storage/limits.hpp)
   double simplify_mm = 0.1;         // Picture: outlines simplified to within this
   double max_pixels = kMaxPngPixels;  // Picture: pixels decoded at most (docs/limits.md)
 };
@@ -34,8 +34,6 @@ struct ImportResult {
   bool opened_vibroimage = false;
   bool ok() const { return image.has_value(); }
 };
-
-inline constexpr int kMaxPictureLevels = 16;
 
 // Reads the file (bounded by kMaxImageFileBytes) and imports it by its extension.
 ImportResult import_file(const std::filesystem::path& path, const ImportOptions& options);

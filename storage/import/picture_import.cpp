@@ -23,10 +23,6 @@ namespace {
 
 using import::Ring;
 
-// Point-in-ring tests allowed per picture (edges visited), so that a picture of many holes in one
-// huge outline is refused rather than taking hours.
-constexpr double kMaxContainmentWork = 4e8;
-
 struct Outline {
   Ring ring;
   Box2 box;
@@ -144,9 +140,9 @@ class PictureImporter {
       for (std::size_t i = 0; i < outers.size() && !placed; ++i) {
         if (!box_inside(hole.box, outers[i].box)) continue;
         work_ += static_cast<double>(polygons[i].front().size());
-        if (work_ > kMaxContainmentWork) {
+        if (work_ > kMaxPictureContainmentTests) {
           error_ = "the picture has too many holes in large outlines to import (limit " +
-                   std::to_string(static_cast<long long>(kMaxContainmentWork)) + " point tests); use fewer --levels or a smaller picture";
+                   std::to_string(static_cast<long long>(kMaxPictureContainmentTests)) + " point tests); use fewer --levels or a smaller picture";
           return false;
         }
         if (contains(Polygon{polygons[i].front()}, hole.ring.front())) {

@@ -7,6 +7,7 @@
 #include "primitives/geometry/hit_test.hpp"
 #include "storage/import/rings.hpp"
 #include "storage/import/svg_flatten.hpp"
+#include "storage/limits.hpp"
 
 namespace vimg::svg {
 
@@ -94,24 +95,39 @@ struct Converter {
     } else {
       return false;
     }
-    out.primitives.push_back(primitive(surface));
+    const bool empty = surface.shape == SurfaceShape::rect ? !(surface.width_mm > 0.0 && surface.height_mm > 0.0)
+                                                           : !(surface.rx_mm > 0.0 && surface.ry_mm > 0.0);
+    if (empty) {
+      out.warnings.push_back("has no area after its transforms: no surface");
+    } else {
+      out.primitives.push_back(primitive(surface));
+    }
     return true;
   }
 
-  // Nonzero and even-odd differ where rings nest with the same direction.
-  void check_fill_rule(const std::vector<import::Ring>& rings) {
+  // The nonzero rule as even-odd: a ring is kept only where the fill changes across it, i.e. when
+  // the winding number just outside it (the directions of the rings around it) and just inside it
+  // differ in being zero. For rings that do not cross, even-odd over the kept rings is the nonzero
+  // fill. Beyond kMaxNonzeroRings rings the test would be slow; they stay even-odd, with a warning.
+  static constexpr std::size_t kMaxNonzeroRings = 1000;
+  void apply_nonzero(std::vector<import::Ring>& rings) {
     if (s.style.even_odd || rings.size() < 2) return;
-    for (std::size_t i = 0; i < rings.size(); ++i) {
-      for (std::size_t j = 0; j < rings.size(); ++j) {
-        if (i == j || !contains(Polygon{rings[j]}, rings[i].front())) continue;
-        if ((import::twice_signed_area(rings[i]) > 0) == (import::twice_signed_area(rings[j]) > 0)) {
-          out.warnings.push_back(
-              "fill-rule nonzero fills a nested outline drawn in the same direction; the surface uses the even-odd "
-              "rule, so it is a hole here");
-          return;
-        }
-      }
+    if (rings.size() > kMaxNonzeroRings) {
+      out.warnings.push_back("fill-rule nonzero with more than " + std::to_string(kMaxNonzeroRings) +
+                             " subpaths: filled by the even-odd rule");
+      return;
     }
+    std::vector<int> direction(rings.size());
+    for (std::size_t i = 0; i < rings.size(); ++i) direction[i] = import::twice_signed_area(rings[i]) > 0 ? 1 : -1;
+    std::vector<import::Ring> kept;
+    for (std::size_t i = 0; i < rings.size(); ++i) {
+      int outside = 0;
+      for (std::size_t j = 0; j < rings.size(); ++j) {
+        if (j != i && contains(Polygon{rings[j]}, rings[i].front())) outside += direction[j];
+      }
+      if ((outside != 0) != (outside + direction[i] != 0)) kept.push_back(rings[i]);
+    }
+    rings = std::move(kept);
   }
 
   bool polygon_surface() {
@@ -123,8 +139,8 @@ struct Converter {
       import::remove_repeats(ring, true);
       if (ring.size() >= 3) rings.push_back(std::move(ring));
     }
+    apply_nonzero(rings);
     if (rings.empty()) return true;
-    check_fill_rule(rings);
     import::Ring joined = import::bridge_rings(rings);
     if (joined.size() > s.max_points) {
       out.error = "a polygon of more than " + std::to_string(s.max_points) + " points (limit " +
@@ -171,10 +187,7 @@ struct Converter {
 
 namespace {
 
-// Coordinates a primitive may have: far beyond any canvas, yet finite after any arithmetic.
-constexpr double kMaxCoordinateMm = 1e9;
-
-bool in_range(double v) { return std::isfinite(v) && std::fabs(v) <= kMaxCoordinateMm; }
+bool in_range(double v) { return std::isfinite(v) && std::fabs(v) <= kMaxImportCoordinateMm; }
 
 bool in_range(const Element& e) {
   if (const auto* d = std::get_if<Dot>(&e.body)) return in_range(d->x_mm) && in_range(d->y_mm) && in_range(d->radius_mm);

@@ -152,6 +152,27 @@ TEST(SvgImport, ClosedPathWithAHoleIsOnePolygonFilledEvenOdd) {
   EXPECT_FALSE(contains(p, {60, 30}));
 }
 
+TEST(SvgImport, NonzeroFillKeepsSameDirectionNestingFilledAndOppositeDirectionAHole) {
+  const auto polygon_of = [](const ImportResult& r) {
+    Polygon p;
+    for (const Point2Mm& q : std::get<Surface>(find(r.image->children, "p")->body).points) p.vertices.push_back({q.x_mm, q.y_mm});
+    return p;
+  };
+  // Both squares clockwise: nonzero fills the inner one too.
+  const ImportResult same = import_text(svg_mm("<path id='p' d='M10 10 H50 V50 H10 Z M20 20 H40 V40 H20 Z'/>"));
+  ASSERT_TRUE(same.ok());
+  EXPECT_TRUE(contains(polygon_of(same), {30, 30}));
+  EXPECT_TRUE(contains(polygon_of(same), {15, 15}));
+  // The inner one counter-clockwise: a hole under nonzero as under even-odd.
+  const ImportResult opposite = import_text(svg_mm("<path id='p' d='M10 10 H50 V50 H10 Z M20 20 V40 H40 V20 Z'/>"));
+  ASSERT_TRUE(opposite.ok());
+  EXPECT_FALSE(contains(polygon_of(opposite), {30, 30}));
+  EXPECT_TRUE(contains(polygon_of(opposite), {15, 15}));
+  // Even-odd: a hole whatever the direction.
+  const ImportResult even_odd = import_text(svg_mm("<path id='p' fill-rule='evenodd' d='M10 10 H50 V50 H10 Z M20 20 H40 V40 H20 Z'/>"));
+  EXPECT_FALSE(contains(polygon_of(even_odd), {30, 30}));
+}
+
 TEST(SvgImport, PhysicalUnitsComeFromWidthHeightAndViewBox) {
   const std::string rect = "<rect id='r' x='10' y='10' width='10' height='10'/>";
   // 2 in wide, viewBox 0..100: a user unit is 0.508 mm.
