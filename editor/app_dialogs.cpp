@@ -60,8 +60,10 @@ void EditorApp::save() {
 
 void EditorApp::prompt_path(PathPrompt what, const std::string& initial) {
   path_prompt_ = what;
-  path_prompt_opening_ = true;
-  std::snprintf(path_buffer_, sizeof path_buffer_, "%s", initial.c_str());
+  const FileChooser::Purpose purpose = what == PathPrompt::open      ? FileChooser::Purpose::open
+                                       : what == PathPrompt::save_as ? FileChooser::Purpose::save_as
+                                                                     : FileChooser::Purpose::save_gesture;
+  chooser_.open(purpose, initial, what == PathPrompt::open ? session_.recent().paths() : std::vector<std::string>{});
 }
 
 void EditorApp::draw_dialogs() {
@@ -76,11 +78,6 @@ void EditorApp::draw_dialogs() {
   if (unsaved_prompt_opening_) {
     ImGui::OpenPopup("Unsaved changes");
     unsaved_prompt_opening_ = false;
-  }
-  if (path_prompt_opening_) {
-    ImGui::OpenPopup("File");
-    path_prompt_opening_ = false;
-    ++path_prompt_count_;
   }
   const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
   ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
@@ -167,45 +164,14 @@ void EditorApp::path_chosen(const std::string& path) {
 }
 
 void EditorApp::draw_path_dialog() {
-  const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
-  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(620, 0));
-  if (!ImGui::BeginPopupModal("File", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  const char* what = path_prompt_ == PathPrompt::open      ? "Open a .vimg or .png image:"
-                     : path_prompt_ == PathPrompt::save_as ? "Save as (.vimg for XML, .png for a picture with the XML inside):"
-                                                           : "Save the recorded gesture as CSV:";
-  ImGui::TextUnformatted(what);
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  ImGui::SetNextItemWidth(-1);
-  const bool entered = ImGui::InputText("##path", path_buffer_, sizeof path_buffer_,
-                                        ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
-  if (ImGui::IsItemActive()) {  // ready for typing (scripted tests wait for this)
-    layout_.print("file_prompt" + std::to_string(path_prompt_count_), ImGui::GetItemRectMin().x,
-                  ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x, ImGui::GetItemRectSize().y);
-  }
-  if (path_prompt_ == PathPrompt::open) {
-    ImGui::TextDisabled("Recent files and examples:");
-    std::vector<std::string> choices = session_.recent().paths();
-    for (const auto& p : library_.files()) choices.push_back(p.string());
-    ImGui::BeginChild("##choices", ImVec2(0, 160), true);
-    for (const std::string& c : choices) {
-      if (ImGui::Selectable(c.c_str())) std::snprintf(path_buffer_, sizeof path_buffer_, "%s", c.c_str());
-    }
-    ImGui::EndChild();
-  }
-  const bool ok = ImGui::Button("OK", ImVec2(120, 0)) || entered;
-  ImGui::SameLine();
-  const bool cancel = ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
-  if (ok && path_buffer_[0] != 0) {
-    const std::string path = path_buffer_;
-    ImGui::CloseCurrentPopup();
-    path_chosen(path);
-  } else if (cancel) {
+  const auto result = chooser_.draw();
+  if (!result) return;
+  if (result->chosen) {
+    path_chosen(result->path);
+  } else {
     pending_ = PendingAction::none;
     path_prompt_ = PathPrompt::none;
-    ImGui::CloseCurrentPopup();
   }
-  ImGui::EndPopup();
 }
 
 }  // namespace vimg::editor

@@ -46,7 +46,8 @@ EditorApp::EditorApp(EditorOptions options)
       playback_(options_, notices_, layout_),
       canvas_(session_.editor(), playback_, notices_, layout_),
       properties_(session_.editor(), notices_, layout_),
-      library_(options_.library_dir) {}
+      library_(options_.library_dir),
+      chooser_(layout_, config_dir() / "recent-folders.txt") {}
 
 EditorApp::~EditorApp() { shutdown_window(); }
 
@@ -122,6 +123,7 @@ int EditorApp::run() {
     ++frames;
     // Key releases held back from the frame that saw the press (see dispatch()).
     keys_pressed_this_frame_.clear();
+    buttons_changed_this_frame_.clear();
     std::vector<SDL_Event> held = std::move(held_events_);
     held_events_.clear();
     for (const SDL_Event& e : held) dispatch(e);
@@ -199,6 +201,17 @@ void EditorApp::dispatch(const SDL_Event& event) {
           keys_pressed_this_frame_.end()) {
     held_events_.push_back(event);
     return;
+  }
+  // Mouse buttons likewise: one change of a button per frame, so a quick double-click is seen as
+  // down, up, down (the later changes wait for the frames after).
+  if (event.type == SDL_MOUSEBUTTONDOWN || event.type == SDL_MOUSEBUTTONUP) {
+    const Uint8 button = event.button.button;
+    if (std::find(buttons_changed_this_frame_.begin(), buttons_changed_this_frame_.end(), button) !=
+        buttons_changed_this_frame_.end()) {
+      held_events_.push_back(event);
+      return;
+    }
+    buttons_changed_this_frame_.push_back(button);
   }
   handle_event(event);
 }

@@ -18,6 +18,7 @@
 #include "editor/core/document_session.hpp"
 #include "editor/core/layout_log.hpp"
 #include "editor/editor_options.hpp"
+#include "editor/file_chooser.hpp"
 #include "editor/library_panel.hpp"
 #include "editor/notices.hpp"
 #include "editor/playback.hpp"
@@ -70,21 +71,20 @@ class EditorApp {
   PropertiesPanel properties_;
   ProblemList problems_;
   LibraryPanel library_;
+  FileChooser chooser_;
 
   SDL_Window* window_ = nullptr;
   SDL_Renderer* renderer_ = nullptr;
   bool quit_ = false;
   int frames_since_input_ = 0;  // frames drawn since the last event (idle when > kSettleFrames)
   std::vector<SDL_Scancode> keys_pressed_this_frame_;
+  std::vector<Uint8> buttons_changed_this_frame_;
   std::vector<SDL_Event> held_events_;  // as of the last frame; input between frames reads it
   bool any_popup_open_ = false;
   std::string last_title_;
 
   // Dialogs
   PathPrompt path_prompt_ = PathPrompt::none;
-  bool path_prompt_opening_ = false;
-  int path_prompt_count_ = 0;
-  char path_buffer_[1024] = {};
   PendingAction pending_ = PendingAction::none;
   std::string pending_path_;
   bool unsaved_prompt_opening_ = false;
