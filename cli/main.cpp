@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "cli/command.hpp"
+#include "storage/atomic_file.hpp"
 
 namespace vimg::cli {
 
@@ -14,6 +15,9 @@ int usage_error(const char* program, const std::string& problem) {
 
 int main(int argc, char** argv) {
   using namespace vimg::cli;
+  // SIGINT/SIGTERM: no half-written file is left (every output goes through AtomicFileWriter) and
+  // vimg exits 130/143. `vimg render` installs its own handlers while it renders.
+  vimg::exit_on_interrupt_removing_temporaries();
   CLI::App app("vimg: validate, convert, inspect and render vibrotactile images, headless.");
   vimg::cmdline::configure(app, "vimg");
   int exit_code = kExitOk;

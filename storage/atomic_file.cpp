@@ -1,11 +1,14 @@
 #include "storage/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
 #include <atomic>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 
 namespace vimg {
@@ -27,7 +30,79 @@ std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
   return folder_of(path) / name;
 }
 
+// The registry of pending temporaries: fixed slots of fixed buffers, claimed and released with
+// atomics only, read by a signal handler. A slot is free, being written or read by its owner
+// (busy), or armed (its path is complete and may be unlinked by the handler).
+enum SlotState : int { kFree = 0, kBusy = 1, kArmed = 2 };
+struct Slot {
+  std::atomic<int> state{kFree};
+  char path[PATH_MAX] = {};
+};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs lock-free atomics");
+std::array<Slot, kMaxPendingTemporaries> g_slots;
+
+int register_temporary(const std::filesystem::path& temp) {
+  const std::string& text = temp.native();
+  if (text.size() >= PATH_MAX) return -1;
+  for (int i = 0; i < kMaxPendingTemporaries; ++i) {
+    Slot& slot = g_slots[static_cast<std::size_t>(i)];
+    int expected = kFree;
+    if (!slot.state.compare_exchange_strong(expected, kBusy, std::memory_order_acquire)) continue;
+    std::memcpy(slot.path, text.c_str(), text.size() + 1);
+    slot.state.store(kArmed, std::memory_order_release);
+    return i;
+  }
+  return -1;
+}
+
+void unregister_temporary(int& index) noexcept {
+  if (index < 0) return;
+  g_slots[static_cast<std::size_t>(index)].state.store(kFree, std::memory_order_release);
+  index = -1;
+}
+
+// Blocks SIGINT and SIGTERM for the scope: a temporary is created and registered as one step, so
+// that a signal never finds it created but not yet registered.
+class BlockInterrupts {
+ public:
+  BlockInterrupts() {
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &set, &previous_);
+  }
+  ~BlockInterrupts() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+  BlockInterrupts(const BlockInterrupts&) = delete;
+  BlockInterrupts& operator=(const BlockInterrupts&) = delete;
+
+ private:
+  sigset_t previous_{};
+};
+
+// 128 + the signal: 130 for SIGINT, 143 for SIGTERM (cmdline::kExitSigint, kExitSigterm).
+extern "C" void exit_removing_temporaries(int signal_number) {
+  remove_pending_temporaries();
+  ::_exit(128 + signal_number);
+}
+
 }  // namespace
+
+void remove_pending_temporaries() noexcept {
+  for (Slot& slot : g_slots) {
+    if (slot.state.load(std::memory_order_acquire) == kArmed) ::unlink(slot.path);
+  }
+}
+
+void exit_on_interrupt_removing_temporaries() {
+  struct sigaction action {};
+  action.sa_handler = exit_removing_temporaries;
+  sigemptyset(&action.sa_mask);
+  sigaddset(&action.sa_mask, SIGINT);
+  sigaddset(&action.sa_mask, SIGTERM);
+  ::sigaction(SIGINT, &action, nullptr);
+  ::sigaction(SIGTERM, &action, nullptr);
+}
 
 AtomicFileWriter::AtomicFileWriter(std::filesystem::path path) : path_(std::move(path)) {
   if (path_.filename().empty() || path_.filename() == "." || path_.filename() == "..") {
@@ -35,7 +110,11 @@ AtomicFileWriter::AtomicFileWriter(std::filesystem::path path) : path_(std::move
     return;
   }
   temp_ = temporary_path_for(path_);
-  fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  {
+    const BlockInterrupts blocked;
+    fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd_ >= 0) registry_slot_ = register_temporary(temp_);
+  }
   if (fd_ < 0) {
     const int saved = errno;
     temp_.clear();
@@ -99,9 +178,12 @@ std::optional<std::string> AtomicFileWriter::commit() {
   if (error_.empty() && ::rename(temp_.c_str(), path_.c_str()) != 0) fail("cannot replace", errno);
   if (!error_.empty()) {
     ::unlink(temp_.c_str());
+    unregister_temporary(registry_slot_);
     temp_.clear();
     return error_;
   }
+  // Renamed: a signal from here on unlinks a name that no longer exists, which is harmless.
+  unregister_temporary(registry_slot_);
   committed_ = true;
   temp_.clear();
   // Make the rename itself durable.
@@ -120,6 +202,7 @@ void AtomicFileWriter::abort() noexcept {
   }
   if (!temp_.empty()) {
     ::unlink(temp_.c_str());
+    unregister_temporary(registry_slot_);
     temp_.clear();
   }
 }

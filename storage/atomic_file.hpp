@@ -7,7 +7,9 @@
 //      otherwise 0666 less the umask;
 //   3. the bytes are written (at once, or streamed by AtomicFileWriter), fsync'ed, the file is
 //      renamed over the target, and the folder is fsync'ed so that the rename is durable;
-//   4. on any error, and when a writer is destroyed without commit(), the temporary is removed.
+//   4. on any error, and when a writer is destroyed without commit(), the temporary is removed;
+//   5. while it exists, the temporary's path sits in a process-wide registry that a signal handler
+//      can empty (remove_pending_temporaries), so that SIGINT/SIGTERM leave no temporary behind.
 //
 // Threads: an AtomicFileWriter belongs to one thread at a time; it may block on the disk, so it
 // never runs on a real-time thread (feed it through an SPSC ring from there).
@@ -18,6 +20,21 @@
 #include <string_view>
 
 namespace vimg {
+
+// At most this many temporaries are registered at once (a program writes one or two at a time);
+// a writer beyond them still works, but a signal would leave its temporary behind.
+inline constexpr int kMaxPendingTemporaries = 32;
+
+// Removes (unlink) every temporary that a writer of this process has created and neither committed
+// nor removed yet. Async-signal-safe and lock-free: for signal handlers. The writers themselves
+// are left as they are (their later calls fail), so call it only on the way out.
+void remove_pending_temporaries() noexcept;
+
+// Installs handlers for SIGINT and SIGTERM that remove the pending temporaries and end the process
+// at once with 130 or 143 (_exit). For programs whose only duty on a signal is to leave no
+// half-written file (vimg). A program that must do more (bring an actuator to rest) keeps its own
+// handler and calls remove_pending_temporaries() from it, or finishes its writers itself.
+void exit_on_interrupt_removing_temporaries();
 
 // Returns an error message naming the path, or nothing on success.
 std::optional<std::string> write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
@@ -50,6 +67,7 @@ class AtomicFileWriter {
 
   std::filesystem::path path_;
   std::filesystem::path temp_;
+  int registry_slot_ = -1;  // this temporary's place in the registry, -1 when not registered
   int fd_ = -1;
   bool committed_ = false;
   std::string error_;
