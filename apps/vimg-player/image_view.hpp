@@ -1,7 +1,9 @@
 #pragma once
 // Draws a vibrotactile image at true physical size: `px_per_mm` screen pixels per millimetre,
-// the canvas's top-left corner at `origin_px`. DOTs are discs, LINEs bands of their width,
-// SURFACEs filled shapes striped at their spatial period.
+// the canvas's top-left corner at `origin_px`. The picture is the PNG export's own
+// (storage/picture.hpp, colours and stripes from storage/palette.hpp): the player, the editor and
+// a converted PNG show an image the same way, surface stripes running vertically.
+// Threads: the UI thread only (SDL rendering).
 #include <SDL.h>
 
 #include "primitives/image.hpp"
@@ -18,6 +20,9 @@ struct ViewTransform {
   double to_y_mm(double y_px) const { return (y_px - origin_y_px) / px_per_mm; }
 };
 
+// Draws the image. The picture is drawn once into a texture and reused while the renderer, the
+// image (its address and primitive count) and the scale stay the same; a picture over the PNG
+// pixel limit is drawn as the bare canvas, with a message on stderr once.
 void draw_image(SDL_Renderer* renderer, const Image& image, const ViewTransform& view);
 
 }  // namespace vimg::player_app
