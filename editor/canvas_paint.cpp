@@ -11,15 +11,20 @@
 #include "editor/canvas_view.hpp"
 #include "editor/core/polyline_lod.hpp"
 #include "editor/playback.hpp"
+#include "storage/palette.hpp"
 
 namespace vimg::editor {
 namespace {
 
-constexpr ImU32 kDotColour = IM_COL32(255, 150, 40, 255);
-constexpr ImU32 kLineColour = IM_COL32(70, 150, 255, 255);
-constexpr ImU32 kSurfaceColour = IM_COL32(70, 200, 130, 255);
-constexpr ImU32 kHighlight = IM_COL32(255, 60, 60, 255);
-constexpr ImU32 kSelection = IM_COL32(255, 255, 255, 255);
+// The colours of storage/palette.hpp, shared with the PNG picture and the player.
+constexpr ImU32 rgb(const palette::Rgb8& c) { return IM_COL32(c.r, c.g, c.b, 255); }
+constexpr ImU32 kDotColour = rgb(palette::kDot);
+constexpr ImU32 kSurfaceColour = rgb(palette::kSurface);
+constexpr ImU32 kHighlight = rgb(palette::kHighlight);
+constexpr ImU32 kSelectionColour = rgb(palette::kSelection);
+constexpr ImU32 kHandleFill = IM_COL32(255, 255, 255, 255);
+ImU32 line_colour(const Line& l) { return rgb(palette::line_colour(l.frequency_hz)); }
+int opacity_alpha(double opacity) { return static_cast<int>(std::lround(255.0 * std::clamp(opacity, 0.0, 1.0))); }
 
 ImU32 with_alpha(ImU32 colour, int alpha) { return (colour & 0x00FFFFFFu) | (static_cast<ImU32>(alpha) << 24); }
 ImVec2 iv(Point2Px p) { return ImVec2(p.x, p.y); }
@@ -66,7 +71,7 @@ void CanvasView::draw_page(ImDrawList* dl) const {
   const Image& image = doc_.image();
   const Point2Px p0 = view_.to_px({0, 0});
   const Point2Px p1 = view_.to_px({image.width_mm, image.height_mm});
-  dl->AddRectFilled(iv(p0), iv(p1), IM_COL32(248, 247, 242, 255));
+  dl->AddRectFilled(iv(p0), iv(p1), rgb(palette::kBackground));
   const double ppm = view_.px_per_mm();
   const double minor = grid_step_mm(ppm, 8.0);
   const double major = grid_step_mm(ppm, 60.0);
@@ -86,14 +91,14 @@ void CanvasView::draw_page(ImDrawList* dl) const {
       dl->AddLine(ImVec2(p0.x, py), ImVec2(p1.x, py), is_major ? major_c : minor_c);
     }
   }
-  dl->AddRect(iv(p0), iv(p1), IM_COL32(120, 120, 120, 255));
+  dl->AddRect(iv(p0), iv(p1), rgb(palette::kCanvasBorder));
 }
 
 void CanvasView::draw_line(ImDrawList* dl, const Line& l, bool highlighted) const {
   const float ppm = static_cast<float>(view_.px_per_mm());
   const Point2Px a = view_.to_px({l.x1_mm, l.y1_mm});
   const Point2Px b = view_.to_px({l.x2_mm, l.y2_mm});
-  const ImU32 col = highlighted ? kHighlight : kLineColour;
+  const ImU32 col = highlighted ? kHighlight : line_colour(l);
   dl->AddLine(iv(a), iv(b), with_alpha(col, 70), std::max(1.0f, view_.length_px(l.width_mm)));
   // A wave along the segment: one drawn cycle per 1000/f mm, so a higher pitch looks denser.
   const double len = std::hypot(l.x2_mm - l.x1_mm, l.y2_mm - l.y1_mm);
@@ -161,7 +166,8 @@ void CanvasView::draw_surface(ImDrawList* dl, const Surface& s, const RectMm& bo
   const double stride = period * every;
   const float thickness = s.pattern == SurfacePattern::square ? std::max(1.0f, static_cast<float>(stride * ppm * 0.5))
                                                               : 1.0f;
-  const int alpha = 60 + static_cast<int>(150 * std::clamp(s.gain, 0.0, 1.0));
+  // The stripes at the pattern's crests, as opaque as the palette makes them there.
+  const int alpha = opacity_alpha(palette::surface_opacity(s, std::ceil(bounds.x0_mm / stride) * stride + period / 4));
   const double start = std::ceil(bounds.x0_mm / stride) * stride;
   int count = 0;
   for (double gx = start; gx <= bounds.x1_mm && count < 2000; gx += stride, ++count) {
@@ -204,7 +210,7 @@ void CanvasView::draw_element(ImDrawList* dl, const Element& element, bool highl
       std::max(bounds->width_mm(), bounds->height_mm()) * ppm < 6.0) {
     const ImU32 col = highlighted                                  ? kHighlight
                       : std::holds_alternative<Dot>(element.body)  ? kDotColour
-                      : std::holds_alternative<Line>(element.body) ? kLineColour
+                      : std::holds_alternative<Line>(element.body) ? line_colour(std::get<Line>(element.body))
                                                                    : kSurfaceColour;
     dl->AddRectFilled(iv(view_.to_px({bounds->x0_mm, bounds->y0_mm})), iv(view_.to_px({bounds->x1_mm, bounds->y1_mm})),
                       with_alpha(col, 200));
@@ -214,7 +220,7 @@ void CanvasView::draw_element(ImDrawList* dl, const Element& element, bool highl
     const Point2Px c = view_.to_px({d->x_mm, d->y_mm});
     const float r = std::max(2.0f, view_.length_px(d->radius_mm));
     const ImU32 col = highlighted ? kHighlight : kDotColour;
-    dl->AddCircleFilled(iv(c), r, with_alpha(col, 80 + static_cast<int>(175 * std::clamp(d->gain, 0.0, 1.0))));
+    dl->AddCircleFilled(iv(c), r, with_alpha(col, opacity_alpha(palette::stroke_opacity(d->gain))));
     dl->AddCircle(iv(c), r, with_alpha(col, 255), 0, 1.5f);
   } else if (const auto* l = std::get_if<Line>(&element.body)) {
     draw_line(dl, *l, highlighted);
@@ -285,15 +291,15 @@ void CanvasView::draw_selection(ImDrawList* dl) const {
     if (!e) continue;
     if (auto b = element_bounds(*e)) {
       dl->AddRect(iv(view_.to_px({b->x0_mm, b->y0_mm})), iv(view_.to_px({b->x1_mm, b->y1_mm})),
-                  IM_COL32(40, 120, 255, 255), 0, 0, 1.0f);
+                  kSelectionColour, 0, 0, 1.0f);
     }
   }
   if (auto b = doc_.selection_bounds(); b && tool_ == Tool::select && !playback_.on()) {
     for (int i = 0; i < 8; ++i) {
       const Point2Px h = view_.to_px(handle_position(*b, i));
-      dl->AddRectFilled(ImVec2(h.x - kHandlePx, h.y - kHandlePx), ImVec2(h.x + kHandlePx, h.y + kHandlePx), kSelection);
+      dl->AddRectFilled(ImVec2(h.x - kHandlePx, h.y - kHandlePx), ImVec2(h.x + kHandlePx, h.y + kHandlePx), kHandleFill);
       dl->AddRect(ImVec2(h.x - kHandlePx, h.y - kHandlePx), ImVec2(h.x + kHandlePx, h.y + kHandlePx),
-                  IM_COL32(40, 120, 255, 255));
+                  kSelectionColour);
     }
   }
   draw_vertex_handles(dl);

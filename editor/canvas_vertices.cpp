@@ -6,11 +6,13 @@
 #include "editor/canvas_view.hpp"
 #include "editor/core/vertex_edit.hpp"
 #include "editor/playback.hpp"
+#include "storage/palette.hpp"
 
 namespace vimg::editor {
 namespace {
 constexpr float kVertexPx = 7.0f;  // grab distance of a vertex handle
 constexpr float kEdgePx = 5.0f;    // grab distance of an edge for inserting
+constexpr ImU32 kSelection = IM_COL32(palette::kSelection.r, palette::kSelection.g, palette::kSelection.b, 255);
 }  // namespace
 
 const Element* CanvasView::vertex_target() const {
@@ -74,8 +76,8 @@ void CanvasView::draw_vertex_handles(ImDrawList* dl) const {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point2Px p = view_.to_px(points[i]);
     const bool chosen = chosen_here && vertex_index_ == i;
-    dl->AddCircleFilled(ImVec2(p.x, p.y), 4.5f, chosen ? IM_COL32(40, 120, 255, 255) : IM_COL32(255, 255, 255, 255));
-    dl->AddCircle(ImVec2(p.x, p.y), 4.5f, IM_COL32(40, 120, 255, 255), 0, 1.5f);
+    dl->AddCircleFilled(ImVec2(p.x, p.y), 4.5f, chosen ? kSelection : IM_COL32(255, 255, 255, 255));
+    dl->AddCircle(ImVec2(p.x, p.y), 4.5f, kSelection, 0, 1.5f);
   }
 }
 
