@@ -31,7 +31,7 @@ void DriveTap::write(std::span<const float> drive, double block_start_time_s) {
   samples_total_ += drive.size();
   next_block_time_s_ = block_start_time_s + static_cast<double>(drive.size()) / rate;
   bool silent = true;
-  std::size_t w = written_.load(std::memory_order_relaxed);
+  std::uint64_t w = written_.load(std::memory_order_relaxed);
   for (float v : drive) {
     if (v != 0.0f) silent = false;
     ring_[w % kRingSize].store(v, std::memory_order_relaxed);
@@ -52,12 +52,24 @@ void DriveTap::write(std::span<const float> drive, double block_start_time_s) {
 
 void DriveTap::copy_recent(std::vector<float>& out, std::size_t count) const {
   if (count > kRingSize) count = kRingSize;
-  const std::size_t w = written_.load(std::memory_order_acquire);
+  const std::uint64_t w = written_.load(std::memory_order_acquire);
   out.assign(count, 0.0f);
-  const std::size_t available = w < count ? w : count;
+  const std::size_t available = w < count ? static_cast<std::size_t>(w) : count;
   for (std::size_t i = 0; i < available; ++i) {
     out[count - available + i] = ring_[(w - available + i) % kRingSize].load(std::memory_order_relaxed);
   }
+}
+
+std::uint64_t DriveTap::copy_since(std::uint64_t first, std::vector<float>& out, std::uint64_t* skipped) const {
+  const std::uint64_t w = written_.load(std::memory_order_acquire);
+  const std::uint64_t oldest = w > kRingSize / 2 ? w - kRingSize / 2 : 0;
+  const std::uint64_t from = first > w ? w : (first < oldest ? oldest : first);
+  if (skipped) *skipped = first < from ? from - first : 0;
+  out.resize(static_cast<std::size_t>(w - from));
+  for (std::uint64_t i = from; i < w; ++i) {
+    out[static_cast<std::size_t>(i - from)] = ring_[i % kRingSize].load(std::memory_order_relaxed);
+  }
+  return w;
 }
 
 std::vector<double> DriveTap::latencies_s() const {

@@ -32,6 +32,14 @@ class DriveTap final : public DriveSink {
 
   // The most recent samples, oldest first (GUI thread).
   void copy_recent(std::vector<float>& out, std::size_t count) const;
+  // How many samples were written since open() (GUI thread).
+  std::uint64_t written() const { return written_.load(std::memory_order_acquire); }
+  // The samples written from sample `first` on, oldest first, into `out` (replacing it), and the
+  // index of the sample after the last one copied (the next call's `first`). Samples older than
+  // kRingSize / 2 are no longer offered (the render thread may be overwriting them): then `out`
+  // starts later than `first`, and `skipped` (if given) says how many were left out. GUI thread;
+  // PredictedScope follows the drive with it.
+  std::uint64_t copy_since(std::uint64_t first, std::vector<float>& out, std::uint64_t* skipped = nullptr) const;
 
   // Called by the input thread when it pushes an event (monotonic seconds).
   void note_event(double event_time_s) { last_event_time_s_.store(event_time_s, std::memory_order_release); }
@@ -55,7 +63,7 @@ class DriveTap final : public DriveSink {
   std::atomic<double> sample_rate_hz_{0.0};
   std::atomic<double> first_block_time_s_;
   std::array<std::atomic<float>, kRingSize> ring_{};
-  std::atomic<std::size_t> written_{0};
+  std::atomic<std::uint64_t> written_{0};
   std::atomic<double> last_event_time_s_{0.0};
   bool was_silent_ = true;  // render thread only
   std::array<std::atomic<double>, kMaxLatencies> latencies_{};
