@@ -62,9 +62,6 @@ bool is_range_message(std::string_view message) {
 class Merger {
  public:
   explicit Merger(std::vector<Problem>& out) : out_(out) {}
-  bool has(Diagnostic::Severity severity, const std::string& message) const {
-    return index_.count({severity, message}) != 0;
-  }
   void add(const Diagnostic& d, bool with_line) {
     const auto key = std::make_pair(d.severity, printable_message(d.message));
     auto it = index_.find(key);
@@ -137,12 +134,10 @@ std::vector<Problem> problem_list(const Image& image, const std::vector<Diagnost
   for (const Diagnostic& d : load_diagnostics) {
     if (!is_range_message(d.message)) merged.add(d, true);
   }
-  std::vector<const Diagnostic*> later;
+  // A message already listed merges into its entry (adding no line).
   for (const Diagnostic& d : live) {
-    if (is_range_message(d.message) || merged.has(d.severity, printable_message(d.message))) continue;
-    later.push_back(&d);
+    if (!is_range_message(d.message)) merged.add(d, false);
   }
-  for (const Diagnostic* d : later) merged.add(*d, false);
   merged.flush();
   return out;
 }
