@@ -73,6 +73,29 @@ TEST(Contours, SimplificationStaysWithinItsTolerance) {
   }
 }
 
+TEST(Rings, BridgedRingsFillExactlyAsTheSeparateRingsEvenOdd) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 20; ++trial) {
+    // An outer square and holes in random cells of a 10 x 10 grid, some holding islands.
+    std::vector<Ring> rings = {{{0, 0}, {100, 0}, {100, 100}, {0, 100}}};
+    for (int cell = 0; cell < 100; ++cell) {
+      if (rng() % 3 != 0) continue;
+      const double x = (cell % 10) * 10.0, y = (cell / 10) * 10.0;
+      rings.push_back({{x + 2, y + 2}, {x + 2, y + 8}, {x + 8, y + 8}, {x + 8, y + 2}});
+      if (rng() % 2 == 0) rings.push_back({{x + 4, y + 4}, {x + 6, y + 4}, {x + 6, y + 6}, {x + 4, y + 6}});
+    }
+    const Polygon bridged{import::bridge_rings(rings)};
+    // Sample points off every ring edge (edges lie on whole numbers).
+    for (int j = 0; j < 140; ++j) {
+      const double y = 0.3183 + j * 0.7071;
+      for (int i = 0; i < 140; ++i) {
+        const double x = 0.2718 + i * 0.7071;
+        ASSERT_EQ(contains(bridged, {x, y}), inside_any(rings, {x, y})) << "trial " << trial << " at " << x << "," << y;
+      }
+    }
+  }
+}
+
 std::vector<std::uint8_t> white(int w, int h, int channels) {
   return std::vector<std::uint8_t>(static_cast<std::size_t>(w * h * channels), 255);
 }
