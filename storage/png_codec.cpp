@@ -10,6 +10,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <new>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "storage/limits.hpp"
@@ -208,6 +210,23 @@ std::uint32_t be32(std::string_view bytes, std::size_t pos) {
   return byte(pos) << 24 | byte(pos + 1) << 16 | byte(pos + 2) << 8 | byte(pos + 3);
 }
 
+// The picture's size from IHDR (the first chunk) against kMaxPngSide and kMaxDecodedPngPixels:
+// a limit, not damage, and named with the size (libpng would only say "Invalid IHDR data").
+std::optional<std::string> size_over_limits(std::string_view bytes) {
+  if (bytes.size() < 24 || bytes.compare(12, 4, "IHDR") != 0) return std::nullopt;  // libpng reports it
+  const std::uint32_t width = be32(bytes, 16), height = be32(bytes, 20);
+  const std::string size = "the picture is " + std::to_string(width) + " x " + std::to_string(height) + " pixels";
+  if (width > static_cast<std::uint32_t>(kMaxPngSide) || height > static_cast<std::uint32_t>(kMaxPngSide)) {
+    return size + ", over the limit of " + std::to_string(kMaxPngSide) + " pixels a side (limit " +
+           std::to_string(kMaxPngSide) + ")";
+  }
+  if (static_cast<double>(width) * static_cast<double>(height) > kMaxDecodedPngPixels) {
+    const auto limit = std::to_string(static_cast<std::uint64_t>(kMaxDecodedPngPixels));
+    return size + ", over the limit of " + limit + " pixels decoded (limit " + limit + ")";
+  }
+  return std::nullopt;
+}
+
 // A text chunk whose keyword is `vibroimage`.
 struct TextChunk {
   std::string_view type;  // tEXt, zTXt or iTXt
@@ -315,6 +334,10 @@ void read_vibroimage_text(std::string_view bytes, PngText& result) {
   } else {
     xml.assign(text);
   }
+  // PNG text never holds a NUL (tEXt/zTXt are Latin-1 without NUL, iTXt UTF-8 without NUL).
+  if (const std::size_t nul = xml.find('\0'); nul != std::string::npos) {
+    return damage("a NUL byte at offset " + std::to_string(nul) + " of its text");
+  }
   result.xml = std::move(xml);
 }
 
@@ -379,6 +402,10 @@ PngText read_png_text(std::string_view bytes) {
   if (!chunk_lengths_fit(bytes, &sink)) {
     result.error = sink.message;
     result.damaged = true;
+    return result;
+  }
+  if (auto limit = size_over_limits(bytes)) {
+    result.error = *limit;
     return result;
   }
   const bool decoded = decode_text(&state, &sink);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <string_view>
 
 #include "storage/diagnostic.hpp"
 #include "storage/limits.hpp"
@@ -15,6 +16,7 @@ class Scanner {
   explicit Scanner(std::string_view xml) : xml_(xml) {}
 
   std::optional<XmlLimitError> run() {
+    if (auto error = check_encoding()) return error;
     while (pos_ < xml_.size()) {
       const std::size_t lt = xml_.find('<', pos_);
       if (lt == std::string_view::npos) break;
@@ -26,6 +28,10 @@ class Scanner {
         if (!markup(9, "]]>")) break;  // text, not counted by tinyxml2 as markup, but a node all the same
       } else if (rest.starts_with("<?")) {
         if (!markup(2, "?>")) break;
+      } else if (rest.starts_with("<!DOCTYPE")) {
+        // tinyxml2 skips a DTD without expanding its entities, so "&name;" would reach the
+        // values as text and be reported as a bad value: say what is really there.
+        return XmlLimitError{line_, "a <!DOCTYPE> declaration (a DTD, entities) is not allowed in this format"};
       } else if (rest.starts_with("<!")) {
         if (!markup(2, ">")) break;
       } else if (rest.starts_with("</")) {
@@ -40,6 +46,44 @@ class Scanner {
   }
 
  private:
+  // The text must be UTF-8 without NUL bytes: UTF-16 and UTF-32 (with or without a byte order
+  // mark) and NULs would otherwise reach tinyxml2, which stops at the first NUL ("the file is
+  // empty") or reports a bare syntax error.
+  std::optional<XmlLimitError> check_encoding() const {
+    const auto starts = [&](std::string_view bom) { return xml_.substr(0, bom.size()) == bom; };
+    using namespace std::string_view_literals;
+    if (starts("\x00\x00\xFE\xFF"sv) || starts("\xFF\xFE\x00\x00"sv)) {
+      return XmlLimitError{1, "the text is UTF-32 (byte order mark); this format is UTF-8"};
+    }
+    if (starts("\xFE\xFF"sv) || starts("\xFF\xFE"sv)) {
+      return XmlLimitError{1, "the text is UTF-16 (byte order mark); this format is UTF-8"};
+    }
+    const std::size_t nul = xml_.find('\0');
+    if (nul != std::string_view::npos) {
+      const int line = 1 + static_cast<int>(std::count(xml_.begin(), xml_.begin() + static_cast<std::ptrdiff_t>(nul), '\n'));
+      return XmlLimitError{line, "a NUL byte at offset " + std::to_string(nul) +
+                                     " (XML text never holds one; is this UTF-16 or a binary file?)"};
+    }
+    const std::size_t end = xml_.starts_with("<?xml") ? xml_.find("?>") : std::string_view::npos;
+    if (end != std::string_view::npos) {
+      const std::string_view declaration = xml_.substr(0, end);
+      const std::size_t at = declaration.find("encoding");
+      if (at != std::string_view::npos) {
+        std::size_t q = declaration.find_first_of("\"'", at);
+        if (q != std::string_view::npos) {
+          const std::size_t close = declaration.find(declaration[q], q + 1);
+          std::string name(declaration.substr(q + 1, close == std::string_view::npos ? 0 : close - q - 1));
+          for (char& c : name) c = static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+          if (name != "UTF-8" && name != "UTF8") {
+            return XmlLimitError{1, "the XML declaration names the encoding \"" + escape_input(name) +
+                                        "\"; this format is UTF-8"};
+          }
+        }
+      }
+    }
+    return std::nullopt;
+  }
+
   // Moves to `to`, counting the newlines passed.
   void advance_to(std::size_t to) {
     line_ += static_cast<int>(std::count(xml_.begin() + static_cast<std::ptrdiff_t>(pos_),

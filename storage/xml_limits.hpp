@@ -16,8 +16,10 @@ struct XmlLimitError {
 };
 
 // Checks kMaxAttributesPerElement, kMaxXmlAttributes, kMaxXmlNestingDepth and kMaxXmlElements;
-// nothing when within.
-// Malformed text is left to the parser: this pass only refuses what is over a limit.
+// nothing when within. It also refuses, with a message naming it, what tinyxml2 would misreport:
+// text that is not UTF-8 (UTF-16/32, NUL bytes, another declared encoding) and a <!DOCTYPE>
+// (tinyxml2 ignores a DTD and leaves its entities unexpanded). Other malformed text is left to
+// the parser.
 std::optional<XmlLimitError> check_xml_limits(std::string_view xml);
 
 }  // namespace vimg
