@@ -160,7 +160,7 @@ struct Parser {
     if (!sweep && delta > 0.0) delta -= 2.0 * std::numbers::pi;
     if (sweep && delta < 0.0) delta += 2.0 * std::numbers::pi;
     if (!std::isfinite(delta) || !std::isfinite(cx) || !std::isfinite(cy)) return line_to(p);
-    const int pieces = std::max(1, static_cast<int>(std::ceil(std::fabs(delta) / (std::numbers::pi / 2.0) - 1e-9)));
+    const int pieces = std::max(1, static_cast<int>(std::ceil(std::fabs(delta) / (std::numbers::pi / 4.0) - 1e-9)));
     const double step = delta / pieces;
     const double k = 4.0 / 3.0 * std::tan(step / 4.0);
     const auto on_ellipse = [&](double t) {
