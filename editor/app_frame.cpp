@@ -48,6 +48,7 @@ void EditorApp::frame() {
   const float canvas_w = std::max(50.0f, W - kToolsWidth - kPropertiesWidth);
   const float canvas_h = std::max(50.0f, H - top - kStatusHeight - scope_h);
 
+  playback_.update_feel(session_.editor().image(), session_.editor().change_count());
   // Tools panel: play, the drawing tools, the library.
   ImGui::SetNextWindowPos(ImVec2(0, top));
   ImGui::SetNextWindowSize(ImVec2(kToolsWidth, H - top - kStatusHeight));

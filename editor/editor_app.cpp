@@ -43,11 +43,13 @@ EditorApp::EditorApp(EditorOptions options)
     : options_(std::move(options)),
       layout_(options_.print_layout),
       session_(session_options(options_)),
-      playback_(options_, notices_, layout_),
+      playback_(options_, notices_, layout_, config_dir() / "recent-folders.txt"),
       canvas_(session_.editor(), playback_, notices_, layout_),
       properties_(session_.editor(), notices_, layout_),
       library_(options_.library_dir),
-      chooser_(layout_, config_dir() / "recent-folders.txt") {}
+      chooser_(layout_, config_dir() / "recent-folders.txt") {
+  properties_.set_feel(&playback_.feel());
+}
 
 EditorApp::~EditorApp() { shutdown_window(); }
 
@@ -187,9 +189,12 @@ void EditorApp::print_benchmark(std::vector<double>& frame_times_s) const {
   };
   SDL_RendererInfo info{};
   SDL_GetRendererInfo(renderer_, &info);
-  std::printf("benchmark: renderer=%s primitives=%zu frames=%zu frame_ms mean=%.2f p50=%.2f p99=%.2f max=%.2f fps=%.1f\n",
-              info.name ? info.name : "?", session_.editor().image().children.size(), frame_times_s.size(), mean * 1e3,
-              pct(0.5) * 1e3, pct(0.99) * 1e3, frame_times_s.back() * 1e3, 1.0 / mean);
+  std::printf(
+      "benchmark: renderer=%s primitives=%zu frames=%zu frame_ms mean=%.2f p50=%.2f p99=%.2f max=%.2f fps=%.1f "
+      "canvas_builds=%llu\n",
+      info.name ? info.name : "?", session_.editor().image().children.size(), frame_times_s.size(), mean * 1e3,
+      pct(0.5) * 1e3, pct(0.99) * 1e3, frame_times_s.back() * 1e3, 1.0 / mean,
+      static_cast<unsigned long long>(canvas_.cache_builds()));
 }
 
 void EditorApp::dispatch(const SDL_Event& event) {

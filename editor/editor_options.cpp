@@ -46,6 +46,9 @@ ParsedOptions parse_editor_options(int argc, char** argv) {
             return parsed.choice ? std::string() : parsed.error;
           },
           "OUT"));
+  app.add_option("--actuator", o.actuator,
+                 "actuator profile to design for (assets/profiles/*.xml): the scope shows its predicted acceleration "
+                 "and the canvas marks primitives it barely renders; default: ideal");
   app.add_option("--rate", o.sample_rate_hz, "output sample rate, Hz")->check(cmdline::finite_in(1.0, 48000.0));
   app.add_option("--recovery-dir", o.recovery_dir, "where autosave keeps the recovery file");
   app.add_option("--autosave-interval", o.autosave_interval_s, "seconds between autosaves of unsaved changes")

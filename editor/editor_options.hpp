@@ -12,6 +12,7 @@ struct EditorOptions {
   std::string recovery_dir;         // empty: RecoveryStore::default_dir()
   std::string library_dir;          // the user's library folder; empty: ~/vibroimages
   std::string record_gesture;       // record in playing mode and write the gesture here on stop
+  std::string actuator;             // actuator profile to design for; empty: the ideal actuator
   OutputChoice output;
   double sample_rate_hz = 8000.0;
   double autosave_interval_s = 5.0;

@@ -3,11 +3,13 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "editor/canvas_view.hpp"
 #include "editor/core/geometry.hpp"
 #include "editor/core/layout_log.hpp"
+#include "storage/palette.hpp"
 #include "realtime/clock.hpp"
 
 namespace vimg::editor {
@@ -16,8 +18,12 @@ constexpr double kTrailS = 1.5;
 ImVec2 iv(Point2Px p) { return ImVec2(p.x, p.y); }
 }  // namespace
 
-Playback::Playback(const EditorOptions& options, Notices& notices, LayoutLog& layout)
-    : options_(options), notices_(notices), layout_(layout) {}
+Playback::Playback(const EditorOptions& options, Notices& notices, LayoutLog& layout,
+                   std::filesystem::path recent_folders_store)
+    : options_(options), notices_(notices), layout_(layout),
+      choice_(feel_, notices, layout, std::move(recent_folders_store)) {
+  if (!options_.actuator.empty()) choice_.choose(options_.actuator);
+}
 
 void Playback::set_on(bool on, const Image& image) {
   if (on == on_) return;
@@ -143,6 +149,7 @@ void Playback::draw_overlay(ImDrawList* dl, const Viewport& view) const {
 }
 
 bool Playback::draw_controls() {
+  choice_.draw();
   const bool pressed = ImGui::Button(on_ ? "Stop playing (F5)" : "Play (F5)", ImVec2(-1, 30));
   layout_.print("play_button", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
                 ImGui::GetItemRectSize().y);
@@ -167,13 +174,67 @@ void Playback::draw_scope(float x, float y, float w, float h) {
   const std::size_t count = rate > 0 ? static_cast<std::size_t>(rate * 0.1) : 800;  // the last 100 ms
   if (tap) tap->copy_recent(scope_samples_, count);
   const LoopStats stats = play_ ? play_->stats() : LoopStats{};
+  if (tap) {
+    predicted_.set_response(feel_.profile().response, feel_.generation());
+    predicted_.update(*tap);
+    predicted_.recent(count, scope_samples_, scope_acceleration_);
+  } else {
+    scope_samples_.assign(count, 0.0f);
+    scope_acceleration_.assign(count, 0.0f);
+  }
   ImGui::Text("last 100 ms at %.0f Hz | loop %.0f Hz, jitter p99 %.2f ms | overruns %llu | contacts %llu", rate,
               stats.measured_rate_hz, stats.jitter_p99_s * 1e3, static_cast<unsigned long long>(stats.overruns),
               static_cast<unsigned long long>(stats.active_contacts));
   const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const float half = std::max(40.0f, (avail.x - ImGui::GetStyle().ItemSpacing.x) * 0.5f);
+  const ImVec2 plot(half, std::max(20.0f, avail.y - ImGui::GetTextLineHeightWithSpacing()));
+  ImGui::BeginGroup();
+  ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "drive");
+  ImGui::PushStyleColor(ImGuiCol_PlotLines, ImVec4(0.55f, 0.75f, 1.0f, 1.0f));
   ImGui::PlotLines("##drive", scope_samples_.data(), static_cast<int>(scope_samples_.size()), 0, nullptr, -1.0f, 1.0f,
-                   ImVec2(avail.x, std::max(20.0f, avail.y)));
+                   plot);
+  ImGui::PopStyleColor();
+  layout_.print("scope_drive", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                ImGui::GetItemRectSize().y);
+  ImGui::EndGroup();
+  ImGui::SameLine();
+  ImGui::BeginGroup();
+  const std::string label = "predicted acceleration on " + feel_.profile().name;
+  ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.25f, 1.0f), "%s", label.c_str());
+  ImGui::PushStyleColor(ImGuiCol_PlotLines, ImVec4(1.0f, 0.6f, 0.25f, 1.0f));
+  ImGui::PlotLines("##acceleration", scope_acceleration_.data(), static_cast<int>(scope_acceleration_.size()), 0,
+                   nullptr, -1.0f, 1.0f, plot);
+  ImGui::PopStyleColor();
+  layout_.print("scope_acceleration", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y,
+                ImGui::GetItemRectSize().x, ImGui::GetItemRectSize().y);
+  ImGui::EndGroup();
   ImGui::End();
+}
+
+void Playback::draw_feel_marks(ImDrawList* dl, const Viewport& view) const {
+  constexpr float kGapPx = 4.0f, kDashPx = 7.0f;
+  const palette::Rgb8 c = palette::kWeakOnActuator;
+  const ImU32 colour = IM_COL32(c.r, c.g, c.b, 255);
+  const auto dashed = [&](ImVec2 a, ImVec2 b) {
+    const float dx = b.x - a.x, dy = b.y - a.y;
+    const float length = std::sqrt(dx * dx + dy * dy);
+    for (float t = 0.0f; t < length; t += kDashPx + kGapPx) {
+      const float u0 = t / length, u1 = std::min(t + kDashPx, length) / length;
+      dl->AddLine(ImVec2(a.x + dx * u0, a.y + dy * u0), ImVec2(a.x + dx * u1, a.y + dy * u1), colour, 2.0f);
+    }
+  };
+  int n = 0;
+  for (const FeltMark& m : feel_.last_marks()) {
+    const Point2Px p0 = view.to_px({m.bounds.x0_mm, m.bounds.y0_mm});
+    const Point2Px p1 = view.to_px({m.bounds.x1_mm, m.bounds.y1_mm});
+    const ImVec2 a(std::min(p0.x, p1.x) - 3.0f, std::min(p0.y, p1.y) - 3.0f);
+    const ImVec2 b(std::max(p0.x, p1.x) + 3.0f, std::max(p0.y, p1.y) + 3.0f);
+    dashed(a, ImVec2(b.x, a.y));
+    dashed(ImVec2(b.x, a.y), b);
+    dashed(b, ImVec2(a.x, b.y));
+    dashed(ImVec2(a.x, b.y), a);
+    layout_.print("weak_mark" + std::to_string(n++) + "_" + m.id, a.x, a.y, b.x - a.x, b.y - a.y);
+  }
 }
 
 }  // namespace vimg::editor

@@ -1,15 +1,23 @@
 #pragma once
 // Playing mode as the designer sees it: the Play button and the gesture recording controls, the
 // mouse and touches turned into touch events for the PlaySession, the finger trail on the canvas
-// and the oscilloscope of the drive. Owns the PlaySession (made on the first play). GUI thread.
+// and the oscilloscope of the drive beside the acceleration the chosen actuator is predicted to
+// give. Owns the PlaySession (made on the first play) and the actuator the editor designs for
+// (ActuatorFeel: `--actuator`, the Actuator choice, the weak-primitive marks on the canvas).
+// GUI thread: the render thread only writes the drive into the DriveTap; the actuator model of the
+// scope runs here, on the samples tapped since the last frame (PredictedScope).
 #include <SDL.h>
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "editor/actuator_choice.hpp"
+#include "editor/core/actuator_feel.hpp"
+#include "editor/core/predicted_scope.hpp"
 #include "editor/core/viewport.hpp"
 #include "editor/editor_options.hpp"
 #include "editor/notices.hpp"
@@ -24,7 +32,10 @@ class LayoutLog;
 
 class Playback {
  public:
-  Playback(const EditorOptions& options, Notices& notices, LayoutLog& layout);
+  // Uses options.actuator when given (a bad profile is reported and the ideal one used).
+  // recent_folders_store: the file chooser's recent folders (for "Open profile...").
+  Playback(const EditorOptions& options, Notices& notices, LayoutLog& layout,
+           std::filesystem::path recent_folders_store);
 
   bool on() const { return on_; }
   // Starts playing `image` (true) or stops (false, writing the recorded gesture when
@@ -43,8 +54,16 @@ class Playback {
   // The Play button and, while playing, the recording controls (in the tools panel). True when
   // the Play button was pressed (the app switches the mode).
   bool draw_controls();
-  // The oscilloscope panel below the canvas.
+  // The oscilloscope panel below the canvas: the drive and the predicted acceleration side by side.
   void draw_scope(float x, float y, float w, float h);
+
+  // The actuator the editor designs for, and its marks for the document as of `change_count`
+  // (computed again only when the document or the profile changed).
+  const ActuatorFeel& feel() const { return feel_; }
+  void update_feel(const Image& image, std::uint64_t change_count) { feel_.marks(image, change_count); }
+  // A dashed outline in the palette's warning colour around every primitive that is weak on the
+  // actuator (as of the last update_feel), drawn over the canvas picture.
+  void draw_feel_marks(ImDrawList* dl, const Viewport& view) const;
 
   bool can_save_gesture() const { return play_ && !play_->recorder().empty(); }
   bool recording() const { return play_ && play_->recording(); }
@@ -63,6 +82,10 @@ class Playback {
   bool mouse_finger_down_ = false;
   std::uint64_t played_change_ = 0;
   std::vector<float> scope_samples_;
+  std::vector<float> scope_acceleration_;
+  ActuatorFeel feel_;
+  ActuatorChoice choice_;
+  PredictedScope predicted_;
 };
 
 }  // namespace vimg::editor

@@ -12,6 +12,7 @@
 #include "editor/core/element_ids.hpp"
 #include "editor/core/layout_log.hpp"
 #include "storage/number_text.hpp"
+#include "storage/palette.hpp"
 #include "storage/parameter_table.hpp"
 
 namespace vimg::editor {
@@ -138,6 +139,14 @@ void PropertiesPanel::draw_element(const std::string& id) {
   };
 
   ImGui::Text("%s", kind_name(e).c_str());
+  if (const FeltMark* weak = feel_ ? feel_->mark_of(id) : nullptr) {
+    const palette::Rgb8 c = palette::kWeakOnActuator;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f));
+    ImGui::TextWrapped("warning: %s", weak->message.c_str());
+    ImGui::PopStyleColor();
+    layout_.print("feel_warning", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                  ImGui::GetItemRectSize().y);
+  }
   if (id_for_ != id || !ImGui::IsAnyItemActive()) {
     std::snprintf(id_buffer_, sizeof id_buffer_, "%s", id.c_str());
     id_for_ = id;

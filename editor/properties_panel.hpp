@@ -5,6 +5,7 @@
 // Each widget interaction is one undo step (a gesture of the DocumentEditor). GUI thread.
 #include <string>
 
+#include "editor/core/actuator_feel.hpp"
 #include "editor/core/document_editor.hpp"
 #include "storage/parameter_table.hpp"
 #include "editor/notices.hpp"
@@ -17,6 +18,8 @@ class PropertiesPanel {
  public:
   PropertiesPanel(DocumentEditor& doc, Notices& notices, LayoutLog& layout);
   void draw(float x, float y, float w, float h);
+  // The actuator the editor designs for: a selected primitive that is weak on it shows the warning.
+  void set_feel(const ActuatorFeel* feel) { feel_ = feel; }
 
  private:
   void draw_element(const std::string& id);
@@ -28,6 +31,7 @@ class PropertiesPanel {
   void track_widget_gesture();
 
   DocumentEditor& doc_;
+  const ActuatorFeel* feel_ = nullptr;
   Notices& notices_;
   LayoutLog& layout_;
   // Text being typed, kept while its widget is active.

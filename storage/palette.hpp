@@ -30,6 +30,7 @@ inline constexpr Rgb8 kLineHigh{110, 40, 200};  // 1000 Hz and above: violet
 inline constexpr Rgb8 kSurface{20, 120, 150};   // teal
 inline constexpr Rgb8 kHighlight{255, 200, 0};  // under the pointer or being touched: amber
 inline constexpr Rgb8 kSelection{0, 110, 255};  // selected in the editor: blue
+inline constexpr Rgb8 kWeakOnActuator{235, 0, 140};  // barely felt on the chosen actuator: magenta, dashed
 
 inline constexpr double kLineLowHz = 20.0;
 inline constexpr double kLineHighHz = 1000.0;

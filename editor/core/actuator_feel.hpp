@@ -43,6 +43,8 @@ class ActuatorFeel {
   // The weak primitives of `image` on the current profile, in paint order (groups walked).
   // Cached: computed again only when `change_count` or the profile changed.
   const std::vector<FeltMark>& marks(const Image& image, std::uint64_t change_count);
+  // The marks as last computed by marks().
+  const std::vector<FeltMark>& last_marks() const { return marks_; }
   // The mark of the element `id` among the last marks computed, if it is weak.
   const FeltMark* mark_of(const std::string& id) const;
 

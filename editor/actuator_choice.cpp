@@ -1,0 +1,63 @@
+#include "editor/actuator_choice.hpp"
+
+#include <imgui.h>
+
+#include "editor/core/layout_log.hpp"
+
+namespace vimg::editor {
+namespace {
+
+// Where the shipped profiles are: the working folder's assets/profiles (as a relative --actuator
+// path is read), else the source tree's, next to the examples.
+std::vector<std::filesystem::path> profile_folders() {
+  return {std::filesystem::path("assets") / "profiles", std::filesystem::path(VIMG_EXAMPLES_DIR).parent_path() / "profiles"};
+}
+
+}  // namespace
+
+ActuatorChoice::ActuatorChoice(ActuatorFeel& feel, Notices& notices, LayoutLog& layout,
+                               std::filesystem::path recent_folders_store)
+    : feel_(feel), notices_(notices), layout_(layout), chooser_(layout, std::move(recent_folders_store)),
+      shipped_(profile_files(profile_folders())) {}
+
+bool ActuatorChoice::choose(const std::filesystem::path& path) {
+  const std::vector<std::string> errors = feel_.choose(path);
+  if (errors.empty()) {
+    notices_.status = "designing for " + feel_.analysis().describe();
+    return true;
+  }
+  std::string text = "cannot use the actuator profile " + path.string() + ":";
+  for (const std::string& e : errors) text += "\n" + e;
+  notices_.report_error(std::move(text));
+  return false;
+}
+
+void ActuatorChoice::draw() {
+  const std::string current = feel_.path().empty() ? "ideal (built in)" : feel_.path().filename().string();
+  ImGui::TextUnformatted("Actuator");
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##actuator", current.c_str())) {
+    if (ImGui::Selectable("ideal (built in)", feel_.path().empty())) {
+      feel_.choose_ideal();
+      notices_.status = "designing for the ideal actuator";
+    }
+    for (const auto& p : shipped_) {
+      if (ImGui::Selectable(p.filename().string().c_str(), p == feel_.path())) choose(p);
+      layout_.print("actuator_item_" + p.stem().string(), ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y,
+                    ImGui::GetItemRectSize().x, ImGui::GetItemRectSize().y);
+    }
+    if (ImGui::Selectable("Open profile...")) {
+      const std::string folder = shipped_.empty() ? std::string() : shipped_.front().parent_path().string() + "/";
+      chooser_.open(FileChooser::Purpose::open, feel_.path().empty() ? folder : feel_.path().string());
+    }
+    layout_.print("actuator_open", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                  ImGui::GetItemRectSize().y);
+    ImGui::EndCombo();
+  }
+  layout_.print("actuator_combo", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                ImGui::GetItemRectSize().y);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", feel_.analysis().describe().c_str());
+  if (const auto result = chooser_.draw(); result && result->chosen) choose(result->path);
+}
+
+}  // namespace vimg::editor
