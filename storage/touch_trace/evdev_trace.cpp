@@ -157,6 +157,8 @@ class TraceBuilder {
   }
 
   bool frame(int line) {
+    // A device that starts reporting multi-touch contacts ends its single-touch one (finger 0).
+    if ((saw_a_ || any_mt_) && single_.open >= 0) close(single_, line, false);
     if (saw_a_) return frame_a(line);
     a_current_ = Contact{};
     if (any_mt_) return frame_b(line);

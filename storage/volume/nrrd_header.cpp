@@ -56,6 +56,29 @@ std::string in_quotes(std::string_view input) { return "'" + escape_input(input)
 
 // teem leaks memory when a list of quoted strings is unterminated or, for `space units`, longer
 // than the space; such values are refused here, before teem reads them.
+// teem also leaks when a per-axis field comes before `dimension`, or a space field before the
+// space is given; the order NRRD asks for is checked here first.
+void check_order(const NrrdHeaderScan& scan, DiagnosticList& list, bool& failed) {
+  static const std::vector<std::string_view> per_axis = {"sizes", "spacings", "thicknesses", "axis mins", "axismins",
+                                                         "axis maxs", "axismaxs", "centers", "centerings", "labels",
+                                                         "units", "kinds", "space directions"};
+  static const std::vector<std::string_view> per_space = {"space units", "space origin", "space directions",
+                                                          "measurement frame"};
+  bool dimension = false, space = false;
+  for (const auto& f : scan.fields) {
+    dimension = dimension || f.name == "dimension";
+    space = space || f.name == "space" || f.name == "space dimension";
+    const auto is = [&](const std::vector<std::string_view>& names) {
+      return std::find(names.begin(), names.end(), f.name) != names.end();
+    };
+    const char* needed = is(per_axis) && !dimension ? "dimension" : is(per_space) && !space ? "space' or 'space dimension" : nullptr;
+    if (needed) {
+      list.error(f.line, "field " + in_quotes(f.name) + " must come after '" + needed + "'");
+      failed = true;
+    }
+  }
+}
+
 void check_quoted_lists(const NrrdHeaderScan& scan, DiagnosticList& list, bool& failed) {
   int space_dim = 0;
   for (const auto& f : scan.fields) {
@@ -170,6 +193,7 @@ std::optional<NrrdHeaderScan> scan_nrrd_header(std::string_view bytes, Diagnosti
     list.error(scan.data_line, "a header with 'data file' may not be followed by data");
     failed = true;
   }
+  check_order(scan, list, failed);
   check_quoted_lists(scan, list, failed);
   if (failed) return std::nullopt;
   scan.teem_header += "\n";

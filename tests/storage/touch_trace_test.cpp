@@ -127,6 +127,21 @@ TEST(TouchTrace, SingleTouchAndANewTrackingIdInTheSameSlot) {
   EXPECT_EQ(swap.trace->contacts[1].samples.front().x, 9.0);
 }
 
+// Found by the fuzzer: a single-touch contact followed by protocol-A contacts gave finger 0 twice.
+TEST(TouchTrace, MultiTouchAfterSingleTouchEndsTheSingleContactFirst) {
+  const TouchTraceParseResult r = parse_touch_trace(
+      "E: 0.0 0001 014a 1\nE: 0.0 0003 0000 5\nE: 0.0 0003 0001 5\nE: 0.0 0000 0000 0\n"
+      "E: 0.1 0003 0035 7\nE: 0.1 0003 0036 7\nE: 0.1 0000 0002 0\nE: 0.1 0000 0000 0\nE: 0.2 0000 0002 0\nE: 0.2 0000 0000 0\n",
+      "m.evemu");
+  ASSERT_TRUE(r.trace) << first_message(r);
+  ASSERT_EQ(r.trace->contacts.size(), 2u);
+  EXPECT_EQ(r.trace->contacts[0].finger, 0);
+  EXPECT_EQ(r.trace->contacts[1].finger, 0);
+  EXPECT_DOUBLE_EQ(r.trace->contacts[0].samples.back().time_s, 0.1);
+  EXPECT_EQ(r.trace->contacts[0].samples.back().phase, Phase::up);
+  EXPECT_DOUBLE_EQ(r.trace->contacts[1].samples.front().time_s, 0.1);
+}
+
 TEST(TouchTrace, AFingerStillDownAtTheEndLiftsThereWithAWarning) {
   const TouchTraceParseResult r =
       parse_touch_trace("E: 0.0 0003 0039 5\nE: 0.0 0003 0035 1\nE: 0.0 0003 0036 1\nE: 0.0 0000 0000 0\nE: 0.3 0000 0000 0\n", "d.evemu");
