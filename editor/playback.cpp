@@ -187,7 +187,7 @@ void Playback::draw_scope(float x, float y, float w, float h) {
               static_cast<unsigned long long>(stats.active_contacts));
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float half = std::max(40.0f, (avail.x - ImGui::GetStyle().ItemSpacing.x) * 0.5f);
-  const ImVec2 plot(half, std::max(20.0f, avail.y - ImGui::GetTextLineHeightWithSpacing()));
+  const ImVec2 plot(half, std::max(20.0f, avail.y - ImGui::GetTextLineHeightWithSpacing() - ImGui::GetStyle().ItemSpacing.y));
   ImGui::BeginGroup();
   ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "drive");
   ImGui::PushStyleColor(ImGuiCol_PlotLines, ImVec4(0.55f, 0.75f, 1.0f, 1.0f));
