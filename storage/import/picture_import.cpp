@@ -15,6 +15,7 @@
 #include "storage/import/import.hpp"
 #include "storage/import/rings.hpp"
 #include "storage/limits.hpp"
+#include "storage/number_text.hpp"
 #include "storage/png_codec.hpp"
 
 namespace vimg {
@@ -63,7 +64,7 @@ class PictureImporter {
 
   ImportResult run(std::string_view bytes) {
     if (!options_.width_mm || !(*options_.width_mm > 0.0) || *options_.width_mm > kMaxCanvasMm) {
-      return fail("a picture needs the width of its canvas in mm, in (0, " + std::to_string(kMaxCanvasMm) + "] (--width-mm)");
+      return fail("a picture needs the width of its canvas in mm, in (0, " + format_decimal(kMaxCanvasMm) + "] (--width-mm)");
     }
     if (options_.levels < 1 || options_.levels > kMaxPictureLevels) {
       return fail("levels must be 1 .. " + std::to_string(kMaxPictureLevels));
@@ -75,8 +76,8 @@ class PictureImporter {
     image_.width_mm = *options_.width_mm;
     image_.height_mm = png.height * mm_per_px;
     if (image_.height_mm > kMaxCanvasMm) {
-      return fail("the canvas would be " + std::to_string(image_.height_mm) + " mm high (limit " +
-                  std::to_string(kMaxCanvasMm) + " mm); give a smaller --width-mm");
+      return fail("the canvas would be " + format_decimal(image_.height_mm) + " mm high (limit " +
+                  format_decimal(kMaxCanvasMm) + " mm); give a smaller --width-mm");
     }
     const std::vector<std::uint8_t> levels = pixel_levels(png, options_.levels);
     std::vector<std::uint8_t> mask(levels.size());
@@ -93,7 +94,7 @@ class PictureImporter {
       image_.children.push_back(std::move(e));
     }
     if (dropped_ > 0) {
-      warnings_.push_back(std::to_string(dropped_) + " outlines smaller than " + std::to_string(options_.simplify_mm) +
+      warnings_.push_back(std::to_string(dropped_) + " outlines smaller than " + format_decimal(options_.simplify_mm) +
                           " mm were too small to keep as surfaces");
     }
     return finish();
@@ -155,7 +156,7 @@ class PictureImporter {
     for (const std::vector<Ring>& rings : polygons) {
       const Ring joined = import::bridge_rings(rings);
       if (joined.size() > kMaxPolygonPoints) {
-        error_ = "an outline of grey level " + std::to_string(gain) + " has more than " + std::to_string(kMaxPolygonPoints) +
+        error_ = "an outline of gain " + format_decimal(gain) + " has more than " + std::to_string(kMaxPolygonPoints) +
                  " points (limit " + std::to_string(kMaxPolygonPoints) + "); use a smaller picture";
         return false;
       }

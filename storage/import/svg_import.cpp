@@ -14,6 +14,7 @@
 #include "storage/import/svg_shapes.hpp"
 #include "storage/import/svg_transform.hpp"
 #include "storage/limits.hpp"
+#include "storage/number_text.hpp"
 #include "storage/xml_limits.hpp"
 
 namespace vimg {
@@ -148,8 +149,9 @@ class SvgImporter {
       return false;
     }
     if (width_mm > kMaxCanvasMm || height_mm > kMaxCanvasMm || !std::isfinite(width_mm) || !std::isfinite(height_mm)) {
-      diagnostics_.error(line, "the drawing is " + std::to_string(width_mm) + " x " + std::to_string(height_mm) +
-                                   " mm, larger than a canvas may be (limit " + std::to_string(kMaxCanvasMm) + " mm)");
+      const auto mm = [](double v) { return std::isfinite(v) ? format_decimal(v) : std::string("infinite"); };
+      diagnostics_.error(line, "the drawing is " + mm(width_mm) + " x " + mm(height_mm) +
+                                   " mm, larger than a canvas may be (limit " + mm(kMaxCanvasMm) + " mm)");
       return false;
     }
     image_.width_mm = width_mm;
