@@ -7,7 +7,10 @@
 //   BM_ConvertPolygon100kPoints/circle     <= 2 s    XML text to PNG file, one 100 000-point polygon
 //   BM_ConvertPolygon100kPoints/zigzag     <= 2 s    the same, every edge spanning the canvas
 //   BM_ValidateElementWith200kAttributes   <= 2 s    2.3 MB, refused (limit 64 attributes)
-//   BM_ValidateDenseFileAtTheSizeLimit     <= 2 s    64 MiB of elements of 64 attributes each
+//   BM_ValidateDenseFileAtTheSizeLimit     <= 2 s    64 MiB of elements of 64 attributes each (refused:
+//                                                    over the attributes per file)
+//   BM_ValidateWorstAcceptedFile           <= 2 s    the most elements, or the most attributes, that
+//                                                    the limits let through to tinyxml2
 #include <benchmark/benchmark.h>
 #include <tinyxml2.h>
 
@@ -173,7 +176,10 @@ void BM_ConvertPolygon100kPoints(benchmark::State& state) {
   const auto path = std::filesystem::temp_directory_path() / "vimg_storage_bench_polygon.png";
   for (auto _ : state) {
     const vimg::LoadResult loaded = vimg::parse_image_xml(xml, "polygon.vimg");
-    if (!loaded.ok()) state.SkipWithError("the polygon image did not load");
+    if (!loaded.ok()) {
+      state.SkipWithError("the polygon image did not load");
+      break;
+    }
     if (vimg::save_image_file(*loaded.image, path, {10.0})) state.SkipWithError("save failed");
   }
   std::filesystem::remove(path);
@@ -207,6 +213,32 @@ void BM_ValidateDenseFileAtTheSizeLimit(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * xml.size()));
 }
 BENCHMARK(BM_ValidateDenseFileAtTheSizeLimit)->Unit(benchmark::kMillisecond);
+
+// The costliest files the structure limits let through to tinyxml2 (docs/limits.md): /0 the most
+// elements (dots of 6 attributes, up to kMaxXmlElements), /1 the most attributes (unknown
+// elements of 64 attributes, up to kMaxXmlAttributes).
+void BM_ValidateWorstAcceptedFile(benchmark::State& state) {
+  std::string xml = "<vibroimage version=\"1.0\" width=\"300\" height=\"300\">\n";
+  if (state.range(0) == 0) {
+    for (std::size_t i = 1; i < vimg::kMaxXmlElements; ++i) {
+      xml += "<dot id=\"d" + std::to_string(i) + "\" x=\"" + std::to_string(i % 300) + "\" y=\"" +
+             std::to_string((i / 300) % 300) + "\" radius=\"1\" gain=\"0.5\" a=\"\"/>\n";
+    }
+  } else {
+    std::string element = "<x";
+    for (std::size_t i = 0; i < vimg::kMaxAttributesPerElement; ++i) element += " a" + std::to_string(i) + "=\"" + std::to_string(i) + "\"";
+    element += "/>\n";
+    for (std::size_t n = 3; n + vimg::kMaxAttributesPerElement <= vimg::kMaxXmlAttributes; n += vimg::kMaxAttributesPerElement) xml += element;
+  }
+  xml += "</vibroimage>\n";
+  for (auto _ : state) {
+    const vimg::LoadResult result = vimg::parse_image_xml(xml, "worst.vimg");
+    if (!result.ok()) state.SkipWithError("the worst accepted file was refused");
+    benchmark::DoNotOptimize(result.diagnostics.size());
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * xml.size()));
+}
+BENCHMARK(BM_ValidateWorstAcceptedFile)->ArgName("attributes")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
