@@ -13,12 +13,6 @@ namespace vimg {
 
 namespace {
 
-ImportResult failure(const std::string& file, std::string message) {
-  ImportResult r;
-  r.diagnostics.push_back({Diagnostic::Severity::error, file, 0, std::move(message)});
-  return r;
-}
-
 std::string lower_extension(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
@@ -40,19 +34,25 @@ void check_written(ImportResult& r, const std::string& file) {
 
 }  // namespace
 
+ImportResult import_failure(const std::string& file, std::string message) {
+  ImportResult r;
+  r.diagnostics.push_back({Diagnostic::Severity::error, file, 0, std::move(message)});
+  return r;
+}
+
 ImportResult import_file(const std::filesystem::path& path, const ImportOptions& options) {
   const std::string name = path.string();
   const std::string ext = lower_extension(path);
-  if (ext != ".svg" && ext != ".png") return failure(name, "cannot import '" + ext + "' files (only .svg and .png)");
+  if (ext != ".svg" && ext != ".png") return import_failure(name, "cannot import '" + ext + "' files (only .svg and .png)");
   FileReadResult read = read_regular_file(path, kMaxImageFileBytes);
-  if (!read.bytes) return failure(name, read.error);
+  if (!read.bytes) return import_failure(name, read.error);
   ImportResult result;
   if (ext == ".svg") {
     result = import_svg(*read.bytes, name, options);
   } else {
-    if (!looks_like_png(*read.bytes)) return failure(name, "is not a PNG file (no PNG signature)");
+    if (!looks_like_png(*read.bytes)) return import_failure(name, "is not a PNG file (no PNG signature)");
     const PngText text = read_png_text(*read.bytes);
-    if (!text.error.empty()) return failure(name, (text.damaged ? "damaged PNG: " : "") + text.error);
+    if (!text.error.empty()) return import_failure(name, (text.damaged ? "damaged PNG: " : "") + text.error);
     if (text.xml) {  // already a vibroimage: opened as one
       const LoadResult loaded = parse_image_xml(*text.xml, name);
       result.image = loaded.image;

@@ -35,6 +35,9 @@ struct ImportResult {
   bool ok() const { return image.has_value(); }
 };
 
+// A result holding one error not tied to a line ("FILE: error: message").
+ImportResult import_failure(const std::string& file, std::string message);
+
 // Reads the file (bounded by kMaxImageFileBytes) and imports it by its extension.
 ImportResult import_file(const std::filesystem::path& path, const ImportOptions& options);
 

@@ -194,9 +194,7 @@ ImportResult import_picture(std::string_view png_bytes, const std::string& file_
   try {
     return importer.run(png_bytes);
   } catch (const std::bad_alloc&) {
-    ImportResult result;
-    result.diagnostics.push_back({Diagnostic::Severity::error, file_name, 0, "out of memory importing the picture"});
-    return result;
+    return import_failure(file_name, "out of memory importing the picture");
   }
 }
 

@@ -388,9 +388,7 @@ ImportResult import_svg(std::string_view svg_text, const std::string& file_name,
   try {
     return importer.run(svg_text);
   } catch (const std::bad_alloc&) {
-    ImportResult result;
-    result.diagnostics.push_back({Diagnostic::Severity::error, file_name, 0, "out of memory importing the drawing"});
-    return result;
+    return import_failure(file_name, "out of memory importing the drawing");
   }
 }
 
