@@ -15,6 +15,7 @@
 #include "hal/actuator_profile.hpp"
 #include "hal/output_spec.hpp"
 #include "hal/rest_on_exit.hpp"
+#include "player/equalizing_sink.hpp"
 #include "player/realtime_renderer.hpp"
 #include "player/scene.hpp"
 #include "realtime/realtime_priority.hpp"
@@ -144,7 +145,11 @@ int run(const PlayerArgs& args) {
   // device service thread, which the output's sink runs between open() and close() (started by
   // renderer.start(), stopped by renderer.stop()): it formats the driver's fault codes into the
   // messages taken below and reconnects a lost device, off the render thread.
-  RealtimeRenderer renderer(output->sink(), realtime);
+  // --equalize: the drive goes through the actuator's equalizer on its way to the output (designed
+  // in open(), before the render thread starts; real-time safe, player/equalizing_sink.hpp).
+  EqualizingSink equalizing(output->sink(), profile.response);
+  DriveSink& drive_path = args.equalize ? static_cast<DriveSink&>(equalizing) : output->sink();
+  RealtimeRenderer renderer(drive_path, realtime);
   renderer.set_scene(scene);
   if (auto error = renderer.start()) {
     std::fprintf(stderr, "vimg-player: %s\n", error->c_str());

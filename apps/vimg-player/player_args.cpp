@@ -32,6 +32,9 @@ ArgsResult parse_player_args(const std::vector<std::string>& arguments) {
                  "audio | audio:DEVICE | wav:FILE | drv2605l:/dev/i2c-1[,en=gpiochip0:17][,calibration=FILE] | "
                  "spi:/dev/spidev0.0[,mode=0][,speed=HZ] | hid:VID:PID");
   app.add_option("--actuator", actuator, "actuator profile (assets/profiles/*.xml); default: ideal, 175 Hz");
+  app.add_flag("--equalize", a.equalize,
+               "shape the real-time drive so that the actuator's modelled acceleration follows the designed "
+               "intensity across its band (as vimg render --equalize); nothing changes without it");
   auto* scale = app.add_option("--px-per-mm", px_per_mm, "screen scale; default: from the display's DPI")
                     ->check(cmdline::finite_in(0.01, 1000.0));
   app.add_option("--rate", a.rate_hz, "render rate, Hz")->check(cmdline::finite_in(1.0, 48000.0));

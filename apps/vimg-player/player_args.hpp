@@ -16,6 +16,7 @@ struct PlayerArgs {
   double rate_hz = 8000.0;
   std::optional<std::pair<int, int>> window_size;
   bool calibrate = false;
+  bool equalize = false;       // equalize the drive for the actuator (ActuatorChain, --equalize)
   int realtime_priority = 80;  // SCHED_FIFO for the render thread: steady latency on a busy device
 };
 

@@ -71,5 +71,16 @@ TEST(PlayerArgs, HelpAndVersionExitZero) {
   EXPECT_EQ(parse({"--version"}).result.exit_code, 0);
 }
 
+TEST(PlayerArgs, EqualizeIsOffUnlessAskedFor) {
+  EXPECT_FALSE(parse({"i.vimg", "--actuator", "lra.xml"}).result.args->equalize);
+  const Parsed r = parse({"i.vimg", "--actuator", "lra.xml", "--equalize"});
+  ASSERT_TRUE(r.result.args.has_value()) << r.err;
+  EXPECT_TRUE(r.result.args->equalize);
+  EXPECT_EQ(r.result.args->actuator_path, "lra.xml");
+  const Parsed bad = parse({"i.vimg", "--equalize=maybe"});
+  EXPECT_FALSE(bad.result.args.has_value());
+  EXPECT_EQ(bad.result.exit_code, 2);
+}
+
 }  // namespace
 }  // namespace vimg::player_app

@@ -1,0 +1,45 @@
+#pragma once
+// A DriveSink in front of the output that equalizes the real-time drive for the actuator
+// (`vimg-player --actuator P --equalize`, docs/actuators.md "Equalizer"): every sample goes through
+// ActuatorChain(params, rate, OutputSignal::drive, equalize = true), the same chain as
+// `vimg render --equalize`, so the player drives the actuator as the render's WAV would. The chain
+// keeps its state from block to block and starts at rest on open().
+//
+// Threads: construction and open() on the control thread, before the stream starts (open() designs
+// the chain at the stream's rate and sizes the block buffer for the largest block the real-time
+// renderer writes: the output's minimum block or 1/50 s); write() on the render thread: no
+// allocation, no lock, no throw (a block longer than the buffer is equalized piece by piece); close()
+// and the accessors on the control thread.
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "player/drive_sink.hpp"
+#include "primitives/actuator/actuator_chain.hpp"
+
+namespace vimg {
+
+class EqualizingSink final : public DriveSink {
+ public:
+  EqualizingSink(DriveSink& output, const ResponseParams& params) : output_(output), params_(params) {}
+
+  void open(double sample_rate_hz) override;
+  void write(std::span<const float> drive, double block_start_time_s) override;
+  void close() override { output_.close(); }
+  bool paces_stream() const override { return output_.paces_stream(); }
+  std::size_t min_block_samples() const override { return output_.min_block_samples(); }
+
+  // False when the chain is the identity for this actuator (ideal, voice coil, ERM): the drive
+  // passes unchanged.
+  bool equalizes() const { return chain_ && !chain_->is_identity(); }
+
+ private:
+  DriveSink& output_;
+  ResponseParams params_;
+  std::optional<ActuatorChain> chain_;
+  std::vector<float> buffer_;
+  double sample_rate_hz_ = 0.0;
+};
+
+}  // namespace vimg

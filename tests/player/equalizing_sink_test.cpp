@@ -1,0 +1,104 @@
+// The player's --equalize path: the drive the output receives is the equalizer applied to the
+// rendered drive, sample for sample, as `vimg render --equalize` applies it offline; without an
+// equalizing actuator the drive passes unchanged.
+#include "player/equalizing_sink.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "player/drive_sinks.hpp"
+
+namespace vimg {
+namespace {
+
+constexpr double kRate = 8000.0;
+
+ResponseParams lra() {
+  ResponseParams p;
+  p.model = ResponseModel::lra;
+  p.resonance_hz = 175.0;
+  p.q = 10.0;
+  return p;
+}
+
+std::vector<float> drive_signal(std::size_t n) {
+  std::vector<float> d(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) / kRate;
+    d[i] = static_cast<float>(0.6 * std::sin(2 * std::numbers::pi * 175 * t) + 0.3 * std::sin(2 * std::numbers::pi * 120 * t));
+  }
+  return d;
+}
+
+// Writes `drive` in blocks of the given sizes (cycled), as the renderer does.
+void write_blocks(DriveSink& sink, const std::vector<float>& drive, const std::vector<std::size_t>& sizes) {
+  std::size_t done = 0, k = 0;
+  while (done < drive.size()) {
+    const std::size_t n = std::min(sizes[k++ % sizes.size()], drive.size() - done);
+    sink.write(std::span<const float>(drive).subspan(done, n), static_cast<double>(done) / kRate);
+    done += n;
+  }
+}
+
+TEST(EqualizingSink, TheOutputGetsTheEqualizerOfTheDriveAsAnOfflineRenderDoes) {
+  const std::vector<float> drive = drive_signal(4000);
+  ActuatorChain offline(lra(), kRate, OutputSignal::drive, true);
+  std::vector<float> expected(drive.size());
+  for (std::size_t i = 0; i < drive.size(); ++i) expected[i] = offline.process(drive[i]);
+
+  // Blocks of 1 ms, of 1/50 s, and longer than the sink's buffer (split inside).
+  for (const std::vector<std::size_t>& sizes : {std::vector<std::size_t>{8}, {160, 7, 33}, {1000}}) {
+    MemorySink memory;
+    EqualizingSink sink(memory, lra());
+    sink.open(kRate);
+    EXPECT_TRUE(sink.equalizes());
+    write_blocks(sink, drive, sizes);
+    sink.close();
+    ASSERT_EQ(memory.samples().size(), drive.size());
+    for (std::size_t i = 0; i < drive.size(); ++i) ASSERT_EQ(memory.samples()[i], expected[i]) << i;
+    EXPECT_TRUE(memory.closed());
+  }
+  // It does change the drive (the resonance is attenuated), and never beyond the drive limit.
+  double diff = 0.0;
+  for (std::size_t i = 0; i < drive.size(); ++i) {
+    diff += std::abs(expected[i] - drive[i]);
+    EXPECT_LE(std::abs(expected[i]), 1.0f);
+  }
+  EXPECT_GT(diff, 100.0);
+}
+
+TEST(EqualizingSink, ABlockLongerThanTheBufferKeepsItsTimes) {
+  struct Times final : DriveSink {
+    std::vector<std::pair<double, std::size_t>> blocks;
+    void open(double) override {}
+    void write(std::span<const float> d, double t) override { blocks.emplace_back(t, d.size()); }
+    void close() override {}
+  } times;
+  EqualizingSink sink(times, lra());
+  sink.open(kRate);
+  const std::vector<float> drive = drive_signal(400);  // the buffer holds 1/50 s = 160 samples
+  sink.write(drive, 2.0);
+  ASSERT_EQ(times.blocks.size(), 3u);
+  EXPECT_DOUBLE_EQ(times.blocks[1].first, 2.0 + 160 / kRate);
+  EXPECT_EQ(times.blocks[2].second, 80u);
+}
+
+TEST(EqualizingSink, ActuatorsWithAFlatBandPassTheDriveUnchanged) {
+  for (const ResponseModel model : {ResponseModel::ideal, ResponseModel::voice_coil, ResponseModel::erm}) {
+    ResponseParams p;
+    p.model = model;
+    MemorySink memory;
+    EqualizingSink sink(memory, p);
+    sink.open(kRate);
+    EXPECT_FALSE(sink.equalizes());
+    const std::vector<float> drive = drive_signal(1000);
+    write_blocks(sink, drive, {64});
+    EXPECT_EQ(memory.samples(), drive);
+  }
+}
+
+}  // namespace
+}  // namespace vimg
