@@ -10,21 +10,9 @@ here=$(cd "$(dirname "$0")" && pwd)
 src=$(cd "$here/../.." && pwd)
 check() { python3 "$here/gui_check.py" "$@"; }
 
-for tool in Xvfb xdotool import python3; do
-  command -v "$tool" >/dev/null || { echo "FAIL: $tool is missing (bash scripts/setup.sh installs it)"; exit 1; }
-done
-
-rm -rf "$art"
-mkdir -p "$art/home"
-art=$(realpath "$art")
-export HOME="$art/home" XDG_CONFIG_HOME="$art/home/.config" XDG_STATE_HOME="$art/home/.state"
-export SDL_AUDIODRIVER=dummy
-
-# A display of our own, and the driver functions (start, click_mm, drag_mm, key, save_as, ...).
-source "$(dirname "$0")/../xvfb_display.sh"
 source "$here/gui_driver.sh"
-trap cleanup EXIT
-start_xvfb 91 160 1400x900x24 "$art/xvfb.log"
+gui_setup 91 160
+export SDL_AUDIODRIVER=dummy
 
 echo "== draw one of each primitive, edit, undo/redo, save, reopen"
 current=draw

@@ -9,17 +9,9 @@ editor=$(realpath "$1")
 art=$2
 here=$(cd "$(dirname "$0")" && pwd)
 check() { python3 "$here/gui_check.py" "$@"; }
-for tool in Xvfb xdotool import python3; do
-  command -v "$tool" >/dev/null || { echo "FAIL: $tool is missing (bash scripts/setup.sh installs it)"; exit 1; }
-done
-rm -rf "$art"
-mkdir -p "$art/home" "$art/work/lib/sub"
-art=$(realpath "$art")
-export HOME="$art/home" XDG_CONFIG_HOME="$art/home/.config" XDG_STATE_HOME="$art/home/.state"
-source "$here/../xvfb_display.sh"
 source "$here/gui_driver.sh"
-trap cleanup EXIT
-start_xvfb 281 320 1400x900x24 "$art/xvfb.log"
+gui_setup 281 320
+mkdir -p "$art/work/lib/sub"
 
 cat >"$art/work/lib/sub/pic.vimg" <<'VIMG'
 <?xml version="1.0" encoding="UTF-8"?>
@@ -30,20 +22,8 @@ VIMG
 echo "not an image" >"$art/work/lib/sub/notes.txt"
 cp "$art/work/lib/sub/pic.vimg" "$art/work/lib/top.vimg"
 
-# item NAME: clicks the chooser entry NAME (printed by --print-layout); N clicks.
-item() {
-  local line="" n=${2:-1}
-  for _ in $(seq 100); do
-    line=$(grep "^layout chooser_item_$1 " "$art/$current.layout" | tail -1 || true)
-    [ -n "$line" ] && break
-    sleep 0.1
-  done
-  [ -n "$line" ] || { echo "FAIL: no entry $1 in the chooser"; shot "no-$1"; exit 1; }
-  local x y w h
-  read -r _ _ x y w h <<<"$line"
-  xdotool mousemove $((WX + x + 20)) $((WY + y + h / 2)); sleep 0.2
-  xdotool click --repeat "$n" --delay 60 1; sleep 0.4
-}
+# item NAME [CLICKS]: clicks the chooser entry NAME (printed by --print-layout) near its left end.
+item() { click_layout "chooser_item_$1" "${2:-1}" 20; sleep 0.1; }
 wait_prompt() {
   for _ in $(seq 300); do grep -q "^layout file_prompt$1 " "$art/$current.layout" && return 0; sleep 0.1; done
   echo "FAIL: no file chooser"; shot no-chooser; exit 1

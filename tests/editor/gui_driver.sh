@@ -2,12 +2,28 @@
 # The caller sets `art` (artifact folder), `current` (the run's name) before using these, and
 # calls `cleanup` from its EXIT trap. The editor prints its layout (--print-layout) and the
 # functions turn millimetres on the page into screen pixels from it.
+#   gui_setup FIRST LAST    check the tools, a fresh $art with its own HOME, Xvfb on a display
+#                           numbered FIRST..LAST (stopped on exit)
 #   start NAME ARGS...      launch the editor (--print-layout --zoom 2 ARGS), wait for the canvas
 #   move_mm/click_mm X Y    move to / click at a page point; drag_mm X0 Y0 X1 Y1
-#   key KEYS...             xdotool key; widget NAME clicks a printed widget
+#   key KEYS...             xdotool key; widget NAME clicks a printed widget in its middle;
+#                           click_layout NAME [CLICKS] [X] clicks it CLICKS times, X px from its left
 #   save_as FILE            Ctrl+Shift+S, type FILE, Enter, wait until FILE exists
 #   shot NAME               screenshot into $art/NAME.png; quit_editor: Ctrl+Q and wait
 editor_pid=""
+gui_setup() {
+  local tool
+  for tool in Xvfb xdotool import python3; do
+    command -v "$tool" >/dev/null || { echo "FAIL: $tool is missing (bash scripts/setup.sh installs it)"; exit 1; }
+  done
+  rm -rf "$art"
+  mkdir -p "$art/home"
+  art=$(realpath "$art")
+  export HOME="$art/home" XDG_CONFIG_HOME="$art/home/.config" XDG_STATE_HOME="$art/home/.state"
+  source "$(dirname "${BASH_SOURCE[0]}")/../xvfb_display.sh"
+  trap cleanup EXIT
+  start_xvfb "$1" "$2" 1400x900x24 "$art/xvfb.log"
+}
 cleanup() {
   if [ -n "$editor_pid" ]; then kill -9 "$editor_pid" 2>/dev/null || true; fi
   stop_xvfb
@@ -50,19 +66,19 @@ drag_mm() {
 }
 key() { xdotool key "$@"; sleep 0.25; }
 # widget NAME: clicks a widget whose layout the editor printed.
-widget() {
-  local line=""
+click_layout() {
+  local line="" clicks=${2:-1} x y w h
   for _ in $(seq 200); do
     line=$(grep "^layout $1 " "$art/$current.layout" | tail -1 || true)
     [ -n "$line" ] && break
     sleep 0.1
   done
-  [ -n "$line" ] || { echo "FAIL: widget $1 not shown"; exit 1; }
-  local x y w h
+  [ -n "$line" ] || { echo "FAIL: widget $1 not shown"; shot "no-$1"; exit 1; }
   read -r _ _ x y w h <<<"$line"
-  xdotool mousemove $((WX + x + w / 2)) $((WY + y + h / 2)); sleep 0.15
-  xdotool click 1; sleep 0.25
+  xdotool mousemove $((WX + x + ${3:-$((w / 2))})) $((WY + y + h / 2)); sleep 0.15
+  xdotool click --repeat "$clicks" --delay 60 1; sleep 0.3
 }
+widget() { click_layout "$1"; }
 prompts=0
 save_as() {
   prompts=$((prompts + 1))

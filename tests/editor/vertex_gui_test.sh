@@ -9,17 +9,8 @@ editor=$(realpath "$1")
 art=$2
 here=$(cd "$(dirname "$0")" && pwd)
 check() { python3 "$here/gui_check.py" "$@"; }
-for tool in Xvfb xdotool import python3; do
-  command -v "$tool" >/dev/null || { echo "FAIL: $tool is missing (bash scripts/setup.sh installs it)"; exit 1; }
-done
-rm -rf "$art"
-mkdir -p "$art/home"
-art=$(realpath "$art")
-export HOME="$art/home" XDG_CONFIG_HOME="$art/home/.config" XDG_STATE_HOME="$art/home/.state"
-source "$here/../xvfb_display.sh"
 source "$here/gui_driver.sh"
-trap cleanup EXIT
-start_xvfb 241 280 1400x900x24 "$art/xvfb.log"
+gui_setup 241 280
 
 cat >"$art/shapes.vimg" <<'VIMG'
 <?xml version="1.0" encoding="UTF-8"?>
