@@ -4,9 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <vector>
 
+#include "../actuator/model_params.hpp"
+#include "../actuator/test_drive.hpp"
 #include "player/drive_sinks.hpp"
 
 namespace vimg::editor {
@@ -14,25 +15,20 @@ namespace {
 
 constexpr double kRate = 8000.0;
 
-ResponseParams lra() {
-  ResponseParams p;
-  p.model = ResponseModel::lra;
-  p.resonance_hz = 175.0;
-  p.q = 10.0;
-  return p;
-}
+using test::lra;
 
-// A drive with a 60 Hz and a 175 Hz part and a silent gap, in blocks of 64.
-std::vector<float> drive_signal(std::size_t n) {
-  std::vector<float> d(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = static_cast<double>(i) / kRate;
-    d[i] = (i / 700) % 3 == 2 ? 0.0f
-                              : static_cast<float>(0.5 * std::sin(2 * std::numbers::pi * 60 * t) +
-                                                   0.4 * std::sin(2 * std::numbers::pi * 175 * t));
+std::vector<float> drive_signal(std::size_t n) { return test::two_tone_drive(n, kRate, 700); }
+
+// A tap over memory, open at kRate, and a scope of `params` following it.
+struct Rig {
+  explicit Rig(const ResponseParams& params) {
+    tap.open(kRate);
+    scope.set_response(params, 1);
   }
-  return d;
-}
+  MemorySink memory;
+  DriveTap tap{memory};
+  PredictedScope scope;
+};
 
 // Writes `drive` to the tap in blocks of 64, updating the scope every `every` blocks.
 void play(DriveTap& tap, PredictedScope& scope, const std::vector<float>& drive, std::size_t every) {
@@ -46,11 +42,9 @@ void play(DriveTap& tap, PredictedScope& scope, const std::vector<float>& drive,
 
 TEST(PredictedScope, AccelerationIsTheModelOfTheTappedDrive) {
   for (const std::size_t every : {1u, 3u, 40u}) {
-    MemorySink memory;
-    DriveTap tap(memory);
-    tap.open(kRate);
-    PredictedScope scope;
-    scope.set_response(lra(), 1);
+    Rig rig(lra());
+    DriveTap& tap = rig.tap;
+    PredictedScope& scope = rig.scope;
     const std::vector<float> drive = drive_signal(3000);
     play(tap, scope, drive, every);
     EXPECT_EQ(scope.modelled(), drive.size());
@@ -75,11 +69,9 @@ TEST(PredictedScope, AccelerationIsTheModelOfTheTappedDrive) {
 }
 
 TEST(PredictedScope, TheIdealProfileGivesTheDriveItself) {
-  MemorySink memory;
-  DriveTap tap(memory);
-  tap.open(kRate);
-  PredictedScope scope;
-  scope.set_response(ResponseParams{}, 1);
+  Rig rig(ResponseParams{});
+  DriveTap& tap = rig.tap;
+  PredictedScope& scope = rig.scope;
   const std::vector<float> drive = drive_signal(1000);
   play(tap, scope, drive, 2);
   std::vector<float> d, a;
@@ -89,11 +81,9 @@ TEST(PredictedScope, TheIdealProfileGivesTheDriveItself) {
 }
 
 TEST(PredictedScope, ZeroPaddedWhileFewSamplesWereSeenAndAProfileChangeStartsTheModelAnew) {
-  MemorySink memory;
-  DriveTap tap(memory);
-  tap.open(kRate);
-  PredictedScope scope;
-  scope.set_response(lra(), 1);
+  Rig rig(lra());
+  DriveTap& tap = rig.tap;
+  PredictedScope& scope = rig.scope;
   const std::vector<float> drive = drive_signal(128);
   play(tap, scope, drive, 1);
   std::vector<float> d, a;
@@ -110,11 +100,9 @@ TEST(PredictedScope, ZeroPaddedWhileFewSamplesWereSeenAndAProfileChangeStartsThe
 }
 
 TEST(PredictedScope, AGuiThatFellBehindSkipsToTheSamplesStillOffered) {
-  MemorySink memory;
-  DriveTap tap(memory);
-  tap.open(kRate);
-  PredictedScope scope;
-  scope.set_response(ResponseParams{}, 1);
+  Rig rig(ResponseParams{});
+  DriveTap& tap = rig.tap;
+  PredictedScope& scope = rig.scope;
   const std::vector<float> drive = drive_signal(DriveTap::kRingSize * 2);
   for (std::size_t b = 0; b * 64 < drive.size(); ++b) {
     tap.write(std::span<const float>(drive).subspan(b * 64, 64), static_cast<double>(b * 64) / kRate);

@@ -6,9 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <vector>
 
+#include "../actuator/model_params.hpp"
+#include "../actuator/test_drive.hpp"
 #include "player/drive_sinks.hpp"
 
 namespace vimg {
@@ -16,22 +17,9 @@ namespace {
 
 constexpr double kRate = 8000.0;
 
-ResponseParams lra() {
-  ResponseParams p;
-  p.model = ResponseModel::lra;
-  p.resonance_hz = 175.0;
-  p.q = 10.0;
-  return p;
-}
+using test::lra;
 
-std::vector<float> drive_signal(std::size_t n) {
-  std::vector<float> d(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = static_cast<double>(i) / kRate;
-    d[i] = static_cast<float>(0.6 * std::sin(2 * std::numbers::pi * 175 * t) + 0.3 * std::sin(2 * std::numbers::pi * 120 * t));
-  }
-  return d;
-}
+std::vector<float> drive_signal(std::size_t n) { return test::two_tone_drive(n, kRate); }
 
 // Writes `drive` in blocks of the given sizes (cycled), as the renderer does.
 void write_blocks(DriveSink& sink, const std::vector<float>& drive, const std::vector<std::size_t>& sizes) {
