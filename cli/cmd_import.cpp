@@ -1,11 +1,13 @@
 // `vimg import DRAWING.svg|PICTURE.png --out IMAGE.(vimg|xml|png)` (docs/import.md): a drawing or a
 // picture made with another tool becomes a vibroimage, written atomically.
+#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "cli/command.hpp"
+#include "hal/rest_on_exit.hpp"
 #include "storage/image_io.hpp"
 #include "storage/import/import.hpp"
 #include "storage/limits.hpp"
@@ -27,13 +29,21 @@ int run_import(const ImportArgs& a) {
   if (a.mm_per_unit > 0.0) options.mm_per_unit = a.mm_per_unit;
   if (a.width_mm > 0.0) options.width_mm = a.width_mm;
   options.levels = a.levels;
+  // SIGINT/SIGTERM only set a flag: the import finishes its step, nothing is written, exit 130/143.
+  const SignalRestScope signals;
+  const auto interrupted = [&] {
+    std::fprintf(stderr, "vimg import: interrupted; %s not written\n", a.out.c_str());
+    return rest_signal() == SIGTERM ? cmdline::kExitSigterm : cmdline::kExitSigint;
+  };
   const ImportResult r = import_file(a.input, options);
+  if (rest_requested()) return interrupted();
   for (const Diagnostic& d : r.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
   if (!r.ok()) return kExitFailure;
   if (r.opened_vibroimage) {
     std::fprintf(stderr, "%s: this PNG already holds a vibroimage: opened as one, not imported as a picture\n",
                  a.input.c_str());
   }
+  if (rest_requested()) return interrupted();
   if (const auto error = save_image_file(*r.image, a.out)) {
     std::fprintf(stderr, "vimg import: %s\n", error->c_str());
     return kExitFailure;

@@ -74,5 +74,24 @@ TEST_F(ImportCommand, FollowsTheCommandLineConventions) {
   EXPECT_EQ(vimg("import " + path("n.txt") + " --out " + path("n.vimg")).exit_code, 1);
 }
 
+TEST_F(ImportCommand, SigintAndSigtermWriteNothingAndExit130And143) {
+  // A picture large enough that the import is still running when the signal comes.
+  const int w = 300, h = 250;
+  std::vector<std::uint8_t> px(static_cast<std::size_t>(w * h));
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) px[static_cast<std::size_t>(y * w + x)] = static_cast<std::uint8_t>((x * 7 + y * 13) % 256);
+  }
+  write("big.png", test::make_png(w, h, 1, px));
+  for (const auto& [signal, code] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
+    const CommandRun r = test::run_command("{ '" VIMG_BINARY_DIR "/cli/vimg' import " + path("big.png") + " --out " + path("big.vimg") +
+                                           " --width-mm 100 --levels 16 & sleep 0.2; kill -" + signal + " $!; wait $!; echo exit=$?; }");
+    EXPECT_NE(r.out.find("exit=" + std::to_string(code)), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("interrupted"), std::string::npos) << r.out;
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(dir_)) {
+    EXPECT_EQ(entry.path().filename(), "big.png") << "left behind: " << entry.path();
+  }
+}
+
 }  // namespace
 }  // namespace vimg
