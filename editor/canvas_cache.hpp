@@ -43,6 +43,8 @@ class CanvasCache {
   // Shows the picture at the region's place.
   void show(ImDrawList* dl) const;
   std::uint64_t builds() const { return builds_; }
+  // The texture's pixels were lost (SDL_RENDER_TARGETS_RESET): draw the picture again.
+  void invalidate() { valid_ = false; }
 
  private:
   SDL_Renderer* renderer_;

@@ -30,6 +30,10 @@ void CanvasView::set_renderer(SDL_Renderer* renderer) {
 
 std::uint64_t CanvasView::cache_builds() const { return cache_ ? cache_->builds() : 0; }
 
+void CanvasView::picture_lost() {
+  if (cache_) cache_->invalidate();
+}
+
 void CanvasView::set_density(double px_per_mm, double zoom) {
   view_ = Viewport(px_per_mm);
   view_.set_zoom(zoom);

@@ -38,6 +38,8 @@ class CanvasView {
   void set_renderer(SDL_Renderer* renderer);
   // How often the cached picture was drawn (canvas_cache.hpp).
   std::uint64_t cache_builds() const;
+  // The renderer lost its textures' pixels: the cached picture is drawn again.
+  void picture_lost();
   const Viewport& view() const { return view_; }
 
   // Draws the canvas window in the given region of the screen and handles the mouse on it.

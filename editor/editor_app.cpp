@@ -239,6 +239,8 @@ void EditorApp::handle_event(const SDL_Event& event) {
     case SDL_KEYDOWN:
       if (!ImGui::GetIO().WantTextInput) handle_shortcut(event.key);
       break;
+    case SDL_RENDER_TARGETS_RESET:
+    case SDL_RENDER_DEVICE_RESET: canvas_.picture_lost(); break;
     default: break;
   }
 }
