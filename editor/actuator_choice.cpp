@@ -17,12 +17,19 @@ std::vector<std::filesystem::path> profile_folders() {
 
 ActuatorChoice::ActuatorChoice(ActuatorFeel& feel, Notices& notices, LayoutLog& layout,
                                std::filesystem::path recent_folders_store)
-    : feel_(feel), notices_(notices), layout_(layout), chooser_(layout, std::move(recent_folders_store)),
-      shipped_(profile_files(profile_folders())) {}
+    : feel_(feel), notices_(notices), layout_(layout), chooser_(layout, recent_folders_store),
+      remembered_(recent_folders_store.parent_path() / "actuator.txt", 1), shipped_(profile_files(profile_folders())) {}
+
+void ActuatorChoice::restore() {
+  if (!remembered_.paths().empty()) choose(remembered_.paths().front());
+}
 
 bool ActuatorChoice::choose(const std::filesystem::path& path) {
   const std::vector<std::string> errors = feel_.choose(path);
   if (errors.empty()) {
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+    if (!ec) remembered_.add(absolute.lexically_normal().string());
     notices_.status = "designing for " + feel_.analysis().describe();
     return true;
   }
@@ -39,6 +46,7 @@ void ActuatorChoice::draw() {
   if (ImGui::BeginCombo("##actuator", current.c_str())) {
     if (ImGui::Selectable("ideal (built in)", feel_.path().empty())) {
       feel_.choose_ideal();
+      if (!remembered_.paths().empty()) remembered_.remove(remembered_.paths().front());
       notices_.status = "designing for the ideal actuator";
     }
     for (const auto& p : shipped_) {

@@ -22,7 +22,11 @@ Playback::Playback(const EditorOptions& options, Notices& notices, LayoutLog& la
                    std::filesystem::path recent_folders_store)
     : options_(options), notices_(notices), layout_(layout),
       choice_(feel_, notices, layout, std::move(recent_folders_store)) {
-  if (!options_.actuator.empty()) choice_.choose(options_.actuator);
+  if (!options_.actuator.empty()) {
+    choice_.choose(options_.actuator);
+  } else {
+    choice_.restore();
+  }
 }
 
 void Playback::set_on(bool on, const Image& image) {

@@ -32,8 +32,9 @@ class LayoutLog;
 
 class Playback {
  public:
-  // Uses options.actuator when given (a bad profile is reported and the ideal one used).
-  // recent_folders_store: the file chooser's recent folders (for "Open profile...").
+  // Uses options.actuator when given (a bad profile is reported and the ideal one used), else the
+  // profile chosen last time. recent_folders_store: the file chooser's recent folders (for "Open
+  // profile..."); the chosen profile is remembered beside it (actuator_choice.hpp).
   Playback(const EditorOptions& options, Notices& notices, LayoutLog& layout,
            std::filesystem::path recent_folders_store);
 

@@ -3,7 +3,8 @@
 # page with a 20 Hz and a 175 Hz surface (fullSpeed 100 mm/s): exactly one, the 20 Hz one, gets the
 # weak mark; selecting it shows the vimg validate warning in the inspector; playing shows the drive
 # and the predicted acceleration side by side. A bad profile on the command line gives its
-# FILE:LINE message and the editor runs on with the ideal actuator (nothing marked).
+# FILE:LINE message and the editor runs on with the ideal actuator (nothing marked); the profile
+# chosen first is remembered for a start without --actuator.
 # usage: feel_gui_test.sh PATH/TO/vimg-editor ARTIFACT_DIR   (screenshots stay there)
 set -euo pipefail
 editor=$(realpath "$1")
@@ -54,5 +55,14 @@ sleep 1
 shot bad-profile
 grep -q "bad.xml:2: error" "$art/bad.log" || { echo "FAIL: no FILE:LINE message for the bad profile"; cat "$art/bad.log"; exit 1; }
 if grep -q '^layout weak_mark' "$art/bad.layout"; then echo "FAIL: marks with the ideal actuator"; exit 1; fi
-# The Problem dialog has no scripted button; the editor is stopped by cleanup.
+kill -9 "$editor_pid"; wait "$editor_pid" 2>/dev/null || true; editor_pid=""  # the Problem dialog has no scripted button
+
+# The LRA chosen in the first run is remembered: a start without --actuator marks the same surface.
+current=again
+start again "$art/two.vimg" --output none --recovery-dir "$art/recovery3"
+for _ in $(seq 100); do grep -q '^layout weak_mark' "$art/again.layout" && break; sleep 0.1; done
+shot remembered
+marks=$( (grep '^layout weak_mark' "$art/again.layout" || true) | awk '{print $2}' | sort -u)
+[ "$marks" = "weak_mark0_sand" ] || { echo "FAIL: the profile was not remembered, marked: $marks"; exit 1; }
+quit_editor
 echo "PASS"
