@@ -128,6 +128,10 @@ std::optional<NrrdHeaderScan> scan_nrrd_header(std::string_view bytes, Diagnosti
     pos = std::min(eol + 1, bytes.size());
     std::string_view line = raw;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (line.find('\0') != std::string_view::npos) {  // teem reads lines as C strings
+      list.error(line_number, "the header holds a NUL byte");
+      return std::nullopt;
+    }
     if (line_number == 1) {
       if (line.size() != 8 || line.substr(0, 7) != "NRRD000" || line[7] < '1' || line[7] > '5') {
         list.error(1, "not a NRRD file: the first line must be NRRD0001 to NRRD0005");
