@@ -10,16 +10,13 @@
 
 #include "cli/command.hpp"
 #include "storage/image_io.hpp"
+#include "storage/file_extension.hpp"
 
 namespace vimg::cli {
 
 namespace {
 
-bool has_extension(const std::filesystem::path& path, std::string_view ext) {
-  std::string e = path.extension().string();
-  for (char& c : e) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  return e == ext;
-}
+bool has_extension(const std::filesystem::path& path, std::string_view ext) { return lower_extension(path) == ext; }
 
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
   std::error_code ec;

@@ -20,16 +20,11 @@
 #include "player/scene.hpp"
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
+#include "storage/file_extension.hpp"
 
 namespace vimg::cli {
 
 namespace {
-
-std::string lower_extension(const std::filesystem::path& p) {
-  std::string ext = p.extension().string();
-  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  return ext;
-}
 
 struct RenderArgs {
   std::string image;

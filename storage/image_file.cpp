@@ -13,6 +13,7 @@
 #include "storage/picture.hpp"
 #include "storage/read_file.hpp"
 #include "storage/png_codec.hpp"
+#include "storage/file_extension.hpp"
 
 namespace vimg {
 
@@ -24,11 +25,7 @@ LoadResult failure(const std::string& file, std::string message) {
   return result;
 }
 
-bool has_png_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  return ext == ".png";
-}
+bool has_png_extension(const std::filesystem::path& path) { return lower_extension(path) == ".png"; }
 
 }  // namespace
 

@@ -1,16 +1,7 @@
 #include "player/clip_export/clip_sink.hpp"
+#include "storage/file_extension.hpp"
 
 namespace vimg {
-
-namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  return ext;
-}
-
-}  // namespace
 
 bool is_clip_extension(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);

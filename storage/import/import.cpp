@@ -8,16 +8,11 @@
 #include "storage/limits.hpp"
 #include "storage/png_codec.hpp"
 #include "storage/read_file.hpp"
+#include "storage/file_extension.hpp"
 
 namespace vimg {
 
 namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  return ext;
-}
 
 // The image as it will be written, read back: its warnings (e.g. a primitive wholly outside the
 // canvas) join the import's; an error would be a fault of the importer and is reported as such.
