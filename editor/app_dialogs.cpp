@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "editor/editor_app.hpp"
+#include "storage/limits.hpp"
 
 namespace vimg::editor {
 
@@ -27,6 +28,7 @@ void EditorApp::perform(PendingAction action, const std::string& path) {
       notices_.status = "new document";
       break;
     case PendingAction::open_file: open_file(path); break;
+    case PendingAction::import_file: import_file(path); break;
     case PendingAction::quit: quit_ = true; break;
     case PendingAction::none: break;
   }
@@ -38,6 +40,17 @@ bool EditorApp::open_file(const std::string& path) {
     return false;
   }
   notices_.status = "opened " + path;
+  return true;
+}
+
+bool EditorApp::import_file(const std::string& path) {
+  if (auto error = session_.import_into_new_document(path, import_options_, [this] { set_play_mode(false); })) {
+    notices_.report_error(*error);
+    return false;
+  }
+  const std::size_t warnings = session_.load_diagnostics().size();
+  notices_.status = session_.path().empty() ? "imported " + path + (warnings ? " (" + std::to_string(warnings) + " warnings: see Problems)" : "")
+                                            : "opened " + path;
   return true;
 }
 
@@ -60,9 +73,10 @@ void EditorApp::save() {
 
 void EditorApp::prompt_path(PathPrompt what, const std::string& initial) {
   path_prompt_ = what;
-  const FileChooser::Purpose purpose = what == PathPrompt::open      ? FileChooser::Purpose::open
-                                       : what == PathPrompt::save_as ? FileChooser::Purpose::save_as
-                                                                     : FileChooser::Purpose::save_gesture;
+  const FileChooser::Purpose purpose = what == PathPrompt::open          ? FileChooser::Purpose::open
+                                       : what == PathPrompt::import_file ? FileChooser::Purpose::import_file
+                                       : what == PathPrompt::save_as     ? FileChooser::Purpose::save_as
+                                                                         : FileChooser::Purpose::save_gesture;
   chooser_.open(purpose, initial, what == PathPrompt::open ? session_.recent().paths() : std::vector<std::string>{});
 }
 
@@ -91,6 +105,7 @@ void EditorApp::draw_dialogs() {
   draw_recovery_dialog();
   draw_unsaved_dialog();
   draw_path_dialog();
+  draw_import_dialog();
 }
 
 void EditorApp::draw_recovery_dialog() {
@@ -153,6 +168,8 @@ void EditorApp::draw_unsaved_dialog() {
 void EditorApp::path_chosen(const std::string& path) {
   if (path_prompt_ == PathPrompt::open) {
     request(PendingAction::open_file, path);
+  } else if (path_prompt_ == PathPrompt::import_file) {
+    import_chosen(path);
   } else if (path_prompt_ == PathPrompt::save_as) {
     if (save_to(path, true) && pending_ != PendingAction::none) perform(pending_, pending_path_);
   } else if (auto error = playback_.save_gesture(path)) {
@@ -172,6 +189,64 @@ void EditorApp::draw_path_dialog() {
     pending_ = PendingAction::none;
     path_prompt_ = PathPrompt::none;
   }
+}
+
+void EditorApp::import_chosen(const std::string& path) {
+  const ImportQuestion q = import_question(path);
+  if (q.picture && q.vibroimage) {  // a PNG vibroimage is simply opened
+    request(PendingAction::open_file, path);
+    return;
+  }
+  import_path_ = path;
+  import_picture_ = q.picture;
+  import_width_mm_ = q.width_mm;
+  import_levels_ = 4;
+  import_set_mm_per_unit_ = false;
+  import_mm_per_unit_ = 1.0;
+  import_prompt_opening_ = true;
+}
+
+void EditorApp::draw_import_dialog() {
+  if (import_prompt_opening_ && !ImGui::IsPopupOpen("File")) {
+    ImGui::OpenPopup("Import");
+    import_prompt_opening_ = false;
+  }
+  const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f);
+  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal("Import", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::Text("Import %s", import_path_.c_str());
+  if (import_picture_) {
+    ImGui::SetNextItemWidth(160);
+    ImGui::InputDouble("width (mm)", &import_width_mm_, 1.0, 10.0, "%.1f");
+    ImGui::SetNextItemWidth(160);
+    ImGui::SliderInt("grey levels", &import_levels_, 1, kMaxPictureLevels);
+  } else {
+    ImGui::Checkbox("mm per SVG unit (else from the file's size)", &import_set_mm_per_unit_);
+    if (import_set_mm_per_unit_) {
+      ImGui::SetNextItemWidth(160);
+      ImGui::InputDouble("mm per unit", &import_mm_per_unit_, 0.01, 0.1, "%.4f");
+    }
+  }
+  ImGui::TextDisabled("Enter: import, Esc: cancel");
+  layout_.print("import_dialog", ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowWidth(),
+                ImGui::GetWindowHeight());
+  const bool ok = ImGui::Button("Import", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
+  ImGui::SameLine();
+  const bool cancel = ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+  if (ok) {
+    ImGui::CloseCurrentPopup();
+    import_options_ = ImportOptions{};
+    if (import_picture_) {
+      import_options_.width_mm = import_width_mm_;
+      import_options_.levels = import_levels_;
+    } else if (import_set_mm_per_unit_) {
+      import_options_.mm_per_unit = import_mm_per_unit_;
+    }
+    request(PendingAction::import_file, import_path_);  // asks to save unsaved changes first
+  } else if (cancel) {
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
 }
 
 }  // namespace vimg::editor

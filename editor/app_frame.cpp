@@ -108,6 +108,7 @@ void EditorApp::draw_menu_bar() {
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("New", "Ctrl+N")) request(PendingAction::new_document);
     if (ImGui::MenuItem("Open...", "Ctrl+O")) prompt_path(PathPrompt::open, "");
+    if (ImGui::MenuItem("Import (.svg or .png)...")) prompt_path(PathPrompt::import_file, "");
     if (ImGui::BeginMenu("Open Recent", !session_.recent().paths().empty())) {
       for (const std::string& p : session_.recent().paths()) {
         if (ImGui::MenuItem(p.c_str())) request(PendingAction::open_file, p);

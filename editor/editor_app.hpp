@@ -48,11 +48,12 @@ class EditorApp {
   void update_title();
   void set_play_mode(bool on);
   // app_dialogs.cpp
-  enum class PendingAction { none, new_document, open_file, quit };
-  enum class PathPrompt { none, open, save_as, save_gesture };
+  enum class PendingAction { none, new_document, open_file, import_file, quit };
+  enum class PathPrompt { none, open, import_file, save_as, save_gesture };
   void request(PendingAction action, std::string path = {});  // asks to save first when dirty
   void perform(PendingAction action, const std::string& path);
   bool open_file(const std::string& path);
+  bool import_file(const std::string& path);  // with import_options_
   bool save_to(const std::string& path, bool becomes_document_path);
   void save();  // to the current path, or asks for one
   void prompt_path(PathPrompt what, const std::string& initial);
@@ -61,6 +62,8 @@ class EditorApp {
   void draw_unsaved_dialog();
   void draw_path_dialog();
   void path_chosen(const std::string& path);
+  void import_chosen(const std::string& path);  // asks the import options, or opens a vibroimage PNG
+  void draw_import_dialog();
 
   EditorOptions options_;
   LayoutLog layout_;
@@ -89,6 +92,15 @@ class EditorApp {
   std::string pending_path_;
   bool unsaved_prompt_opening_ = false;
   bool recovery_prompt_opening_ = false;
+  // File -> Import: the options asked before importing (picture width and levels; SVG scale).
+  bool import_prompt_opening_ = false;
+  bool import_picture_ = false;
+  std::string import_path_;
+  double import_width_mm_ = 100.0;
+  int import_levels_ = 4;
+  bool import_set_mm_per_unit_ = false;
+  double import_mm_per_unit_ = 1.0;
+  ImportOptions import_options_;
 };
 
 }  // namespace vimg::editor

@@ -41,7 +41,10 @@ FileChooser::FileChooser(LayoutLog& layout, fs::path recent_folders_store)
 
 void FileChooser::open(Purpose purpose, const std::string& initial, std::vector<std::string> recent_files) {
   purpose_ = purpose;
-  filters_ = purpose == Purpose::open ? image_filters() : purpose == Purpose::save_as ? save_filters() : gesture_filters();
+  filters_ = purpose == Purpose::open          ? image_filters()
+             : purpose == Purpose::import_file ? import_filters()
+             : purpose == Purpose::save_as     ? save_filters()
+                                               : gesture_filters();
   filter_ = 0;
   recent_files_ = std::move(recent_files);
   message_.clear();
@@ -137,7 +140,8 @@ std::optional<FileChooser::Result> FileChooser::accept_name() {
     return std::nullopt;
   }
   fs::path chosen = *path;
-  if (purpose_ != Purpose::open) chosen = chosen.parent_path() / with_extension(chosen.filename().string(), filter);
+  const bool reading = purpose_ == Purpose::open || purpose_ == Purpose::import_file;
+  if (!reading) chosen = chosen.parent_path() / with_extension(chosen.filename().string(), filter);
   if (!is_folder(chosen.parent_path())) {
     message_ = "no such folder: " + chosen.parent_path().string();
     return std::nullopt;
@@ -158,6 +162,8 @@ std::optional<FileChooser::Result> FileChooser::draw() {
   if (!ImGui::BeginPopupModal("File", nullptr, ImGuiWindowFlags_NoSavedSettings)) return std::nullopt;
   std::optional<Result> result;
   ImGui::TextUnformatted(purpose_ == Purpose::open      ? "Open an image (.vimg or .xml, or a .png with the XML inside):"
+                         : purpose_ == Purpose::import_file
+                             ? "Import a drawing (.svg) or a picture (.png) as a new document:"
                          : purpose_ == Purpose::save_as ? "Save as (.vimg or .xml for XML, .png for a picture with the XML inside):"
                                                         : "Save the recorded gesture as CSV:");
   if (ImGui::Button("Up")) go_to(parent_folder(folder_));
@@ -196,7 +202,9 @@ std::optional<FileChooser::Result> FileChooser::draw() {
                   ImGui::GetItemRectSize().x, ImGui::GetItemRectSize().y);
   }
   if (entered) ImGui::SetKeyboardFocusHere(-1);  // stay in the field (e.g. after typing a folder)
-  const bool ok = ImGui::Button(purpose_ == Purpose::open ? "Open" : "Save", ImVec2(120, 0)) || entered || double_clicked;
+  const bool ok = ImGui::Button(purpose_ == Purpose::open          ? "Open"
+                                : purpose_ == Purpose::import_file ? "Import"
+                                                                   : "Save", ImVec2(120, 0)) || entered || double_clicked;
   ImGui::SameLine();
   const bool cancel = ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
   if (ok && name_[0] != 0) {

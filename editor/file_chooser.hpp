@@ -1,5 +1,5 @@
 #pragma once
-// The file chooser of Open, Save As and Save Gesture: a folder's listing (folders first, then the
+// The file chooser of Open, Import, Save As and Save Gesture: a folder's listing (folders first, then the
 // files the chosen filter accepts), Up and into folders, recent folders and recent files, and a
 // name field that also takes a typed path (relative to the folder shown, ~ for home, or
 // absolute). The listing logic is editor/core/folder_listing.*; the recent folders are kept in
@@ -18,7 +18,7 @@ class LayoutLog;
 
 class FileChooser {
  public:
-  enum class Purpose { open, save_as, save_gesture };
+  enum class Purpose { open, import_file, save_as, save_gesture };
   FileChooser(LayoutLog& layout, std::filesystem::path recent_folders_store);
 
   // Opens the chooser on the next draw(): in the folder of `initial` if it names one (else the

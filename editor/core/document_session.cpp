@@ -1,7 +1,13 @@
 #include "editor/core/document_session.hpp"
 
+#include <cctype>
+#include <cstdint>
+
 #include "editor/core/document_problems.hpp"
 #include "storage/image_io.hpp"
+#include "storage/limits.hpp"
+#include "storage/png_codec.hpp"
+#include "storage/read_file.hpp"
 
 namespace vimg::editor {
 
@@ -12,6 +18,53 @@ std::string join_diagnostics(const std::vector<Diagnostic>& diagnostics) {
     out += d.to_string();
   }
   return out;
+}
+
+namespace {
+
+std::uint32_t big_endian_u32(std::string_view bytes, std::size_t at) {
+  std::uint32_t v = 0;
+  for (std::size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
+  return v;
+}
+
+}  // namespace
+
+std::optional<double> png_physical_width_mm(std::string_view png_bytes) {
+  if (!looks_like_png(png_bytes)) return std::nullopt;
+  std::optional<std::uint32_t> width_px;
+  std::size_t at = 8;  // after the signature: chunks of length, type, data, CRC
+  while (at + 12 <= png_bytes.size()) {
+    const std::uint32_t length = big_endian_u32(png_bytes, at);
+    const std::string_view type = png_bytes.substr(at + 4, 4);
+    if (length > png_bytes.size() - at - 12) return std::nullopt;  // cut short
+    const std::size_t data = at + 8;
+    if (type == "IHDR" && length >= 4) width_px = big_endian_u32(png_bytes, data);
+    if (type == "pHYs" && length == 9 && width_px && *width_px > 0) {
+      const std::uint32_t per_metre_x = big_endian_u32(png_bytes, data);
+      const bool metre = png_bytes[data + 8] == 1;
+      if (!metre || per_metre_x == 0) return std::nullopt;
+      const double width_mm = 1000.0 * *width_px / per_metre_x;
+      if (!(width_mm > 0.0) || width_mm > kMaxCanvasMm) return std::nullopt;
+      return width_mm;
+    }
+    if (type == "IDAT" || type == "IEND") return std::nullopt;  // pHYs comes before the pixels
+    at = data + length + 4;
+  }
+  return std::nullopt;
+}
+
+ImportQuestion import_question(const std::string& path) {
+  ImportQuestion q;
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".png") return q;
+  q.picture = true;
+  const FileReadResult read = read_regular_file(path, kMaxImageFileBytes);
+  if (!read.bytes) return q;  // the import reports it
+  if (looks_like_png(*read.bytes)) q.vibroimage = read_png_text(*read.bytes).xml.has_value();
+  if (auto width_mm = png_physical_width_mm(*read.bytes)) q.width_mm = *width_mm;
+  return q;
 }
 
 Image DocumentSession::blank_image(const std::string& tool_version) {
@@ -58,6 +111,21 @@ std::optional<std::string> DocumentSession::open(const std::string& path, const 
   path_ = path;
   load_diagnostics_ = std::move(opened.diagnostics);
   recent_.add(path);
+  discard_recovery_unless_pending();
+  return std::nullopt;
+}
+
+std::optional<std::string> DocumentSession::import_into_new_document(const std::string& path,
+                                                                    const ImportOptions& options,
+                                                                    const std::function<void()>& before_replace) {
+  ImportResult result = import_file(path, options);
+  if (!result.ok()) return result.diagnostics.empty() ? path + ": cannot import" : join_diagnostics(result.diagnostics);
+  if (result.opened_vibroimage) return open(path, before_replace);  // a vibroimage already: opened
+  if (before_replace) before_replace();
+  doc_.reset(std::move(*result.image));
+  doc_.mark_unsaved();  // new and untitled: Save asks for a path, closing asks to save
+  path_.clear();
+  load_diagnostics_ = std::move(result.diagnostics);
   discard_recovery_unless_pending();
   return std::nullopt;
 }

@@ -7,12 +7,14 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "editor/core/document_editor.hpp"
 #include "editor/core/recent_files.hpp"
 #include "editor/core/recovery.hpp"
 #include "storage/diagnostic.hpp"
+#include "storage/import/import.hpp"
 
 namespace vimg::editor {
 
@@ -46,6 +48,12 @@ class DocumentSession {
   // (the path leaves the recent-files list). A file with errors that can still be read opens with
   // every element that could be read, its problems in load_diagnostics() (document_problems.hpp).
   std::optional<std::string> open(const std::string& path, const std::function<void()>& before_replace = {});
+  // File -> Import: imports a drawing or picture (storage/import/import.hpp) as a new untitled,
+  // unsaved document; its warnings become load_diagnostics(). A PNG that already carries a
+  // vibroimage is opened as open() would. On failure the document stays and the errors are
+  // returned. `before_replace` as for open().
+  std::optional<std::string> import_into_new_document(const std::string& path, const ImportOptions& options,
+                                                      const std::function<void()>& before_replace = {});
   // Writes the document (the format by extension, atomically). `becomes_document_path`: the
   // document now belongs to `path` and is saved (Save, Save As); otherwise a copy (Export).
   std::optional<std::string> save_to(const std::string& path, bool becomes_document_path);
@@ -79,6 +87,18 @@ class DocumentSession {
   std::uint64_t autosaved_change_ = 0;
   double last_autosave_s_ = 0.0;
 };
+
+// What File -> Import asks before importing `path`: whether it is a picture (PNG) and, if so,
+// whether it already carries a vibroimage (then it is opened, nothing asked) and its width in mm
+// from its pHYs chunk (100 mm when it has none or it cannot be read).
+struct ImportQuestion {
+  bool picture = false;
+  bool vibroimage = false;
+  double width_mm = 100.0;
+};
+ImportQuestion import_question(const std::string& path);
+// The width in mm a PNG's pHYs chunk gives its pixels (unit: metre); nothing without one.
+std::optional<double> png_physical_width_mm(std::string_view png_bytes);
 
 // The diagnostics one a line, as the problem dialog shows them.
 std::string join_diagnostics(const std::vector<Diagnostic>& diagnostics);

@@ -28,6 +28,13 @@ std::vector<FileFilter> image_filters() {
           {"All files", {}}};
 }
 
+std::vector<FileFilter> import_filters() {
+  return {{"Drawings and pictures (.svg, .png)", {".svg", ".png"}},
+          {"SVG drawings (.svg)", {".svg"}},
+          {"PNG pictures (.png)", {".png"}},
+          {"All files", {}}};
+}
+
 std::vector<FileFilter> save_filters() {
   return {{"XML (.vimg, .xml)", {".vimg", ".xml"}}, {"PNG with the XML inside (.png)", {".png"}}};
 }

@@ -23,6 +23,8 @@ struct FileFilter {
 };
 // Open/Import: images (.vimg .xml .png), XML (.vimg .xml), PNG (.png), all files.
 std::vector<FileFilter> image_filters();
+// Import: drawings and pictures (.svg .png), SVG (.svg), PNG (.png), all files.
+std::vector<FileFilter> import_filters();
 // Save as: XML (.vimg .xml), PNG (.png).
 std::vector<FileFilter> save_filters();
 // Save gesture: CSV (.csv).

@@ -128,5 +128,11 @@ TEST(FolderListing, RecentFoldersAreKeptMostRecentFirst) {
   EXPECT_EQ(again.paths(), (std::vector<std::string>{"/d", "/b", "/c"}));
 }
 
+TEST(FolderListing, ImportOffersDrawingsAndPicturesOnly) {
+  const FileFilter both = import_filters().front();
+  for (const char* name : {"a.svg", "B.SVG", "c.png", "d.Png"}) EXPECT_TRUE(accepts(both, name)) << name;
+  for (const char* name : {"a.vimg", "b.xml", "svg", "c.svgz", "d.png.txt"}) EXPECT_FALSE(accepts(both, name)) << name;
+}
+
 }  // namespace
 }  // namespace vimg::editor
