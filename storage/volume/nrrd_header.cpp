@@ -150,6 +150,12 @@ std::optional<NrrdHeaderScan> scan_nrrd_header(std::string_view bytes, Diagnosti
       scan.teem_header += std::string(line) + "\n";
       continue;
     }
+    if (line.size() > kMaxNrrdFieldLineBytes) {  // teem overflows its message buffer on long words
+      list.error(line_number, "the field line is longer than " + std::to_string(kMaxNrrdFieldLineBytes) + " bytes (limit " +
+                                  std::to_string(kMaxNrrdFieldLineBytes) + ")");
+      failed = true;
+      continue;
+    }
     const std::size_t colon = line.find(": ");
     if (colon == std::string_view::npos) {
       list.error(line_number, "expected 'field: value', got " + in_quotes(line));
