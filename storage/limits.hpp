@@ -36,6 +36,10 @@ inline constexpr std::size_t kMaxVolumeFileBytes = 1024 * kMiB;  // a whole NRRD
 inline constexpr std::size_t kMaxXmlElements = 250'000 / kLimitScale;  // elements, comments and other markup per file
 inline constexpr std::size_t kMaxXmlAttributes = 1'600'000 / kLimitScale;  // attributes per file
 inline constexpr std::size_t kMaxAttributesPerElement = 64;
+// Unknown attributes kept on one element: the writer adds every known attribute the element lacks
+// (a surface rect has 10), and what it writes must read back under kMaxAttributesPerElement.
+inline constexpr std::size_t kMaxKnownAttributesPerElement = 10;
+inline constexpr std::size_t kMaxUnknownAttributesPerElement = kMaxAttributesPerElement - kMaxKnownAttributesPerElement;
 inline constexpr int kMaxXmlNestingDepth = 64;             // elements inside elements, the root is depth 1
 inline constexpr std::size_t kMaxPolygonPoints = 100'000 / kLimitScale;  // points of one polygon surface
 

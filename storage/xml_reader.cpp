@@ -131,14 +131,28 @@ class Reader {
   ExtraAttributes gather(const XMLElement& e, AttributeNames known) {
     known_ = known;
     slots_.fill(nullptr);
+    std::size_t unknown = 0;
+    for (const XMLAttribute* a = e.FirstAttribute(); a != nullptr; a = a->Next()) {
+      const std::size_t slot = slot_of(known, a->Name());
+      if (slot < known.size()) {
+        slots_[slot] = a;
+      } else {
+        ++unknown;
+      }
+    }
+    // One error instead of a warning per attribute, so that the cap on messages never hides it.
+    if (unknown > kMaxUnknownAttributesPerElement) {
+      error(e.GetLineNum(), tag(e) + " has " + std::to_string(unknown) + " unknown attributes; at most " +
+                                std::to_string(kMaxUnknownAttributesPerElement) +
+                                " are kept, so that the file written back stays within " +
+                                std::to_string(kMaxAttributesPerElement) + " attributes per element (limit " +
+                                std::to_string(kMaxUnknownAttributesPerElement) + ")");
+      return {};
+    }
     ExtraAttributes extras;
     for (const XMLAttribute* a = e.FirstAttribute(); a != nullptr; a = a->Next()) {
       const std::string_view name = a->Name();
-      const std::size_t slot = slot_of(known, name);
-      if (slot < known.size()) {
-        slots_[slot] = a;
-        continue;
-      }
+      if (slot_of(known, name) < known.size()) continue;
       if (list_.keeps(a->GetLineNum())) {
         warning(a->GetLineNum(), "unknown attribute '" + q(name) + "' on " + tag(e) + " kept as is");
       } else {
