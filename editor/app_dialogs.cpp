@@ -230,9 +230,12 @@ void EditorApp::draw_import_dialog() {
   ImGui::TextDisabled("Enter: import, Esc: cancel");
   layout_.print("import_dialog", ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowWidth(),
                 ImGui::GetWindowHeight());
-  const bool ok = ImGui::Button("Import", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
+  // Not the Enter that chose the file in the chooser (the popup opens in the frame of that press).
+  const bool keys = !ImGui::IsWindowAppearing();
+  const bool ok = ImGui::Button("Import", ImVec2(120, 0)) || (keys && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)));
   ImGui::SameLine();
-  const bool cancel = ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+  const bool cancel =
+      ImGui::Button("Cancel", ImVec2(120, 0)) || (keys && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)));
   if (ok) {
     ImGui::CloseCurrentPopup();
     import_options_ = ImportOptions{};

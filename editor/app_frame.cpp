@@ -105,10 +105,15 @@ void EditorApp::draw_status_bar(float w, float h) {
 void EditorApp::draw_menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
   DocumentEditor& doc = session_.editor();
-  if (ImGui::BeginMenu("File")) {
+  const bool file_menu = ImGui::BeginMenu("File");
+  layout_.print("menu_file", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                ImGui::GetItemRectSize().y);
+  if (file_menu) {
     if (ImGui::MenuItem("New", "Ctrl+N")) request(PendingAction::new_document);
     if (ImGui::MenuItem("Open...", "Ctrl+O")) prompt_path(PathPrompt::open, "");
     if (ImGui::MenuItem("Import (.svg or .png)...")) prompt_path(PathPrompt::import_file, "");
+    layout_.print("menu_import", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                  ImGui::GetItemRectSize().y);
     if (ImGui::BeginMenu("Open Recent", !session_.recent().paths().empty())) {
       for (const std::string& p : session_.recent().paths()) {
         if (ImGui::MenuItem(p.c_str())) request(PendingAction::open_file, p);
