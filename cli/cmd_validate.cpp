@@ -54,7 +54,9 @@ void add_validate_command(CLI::App& vimg, int& exit_code) {
                   "actuator profile (assets/profiles/*.xml): also warn about every SURFACE and LINE whose frequency at "
                   "fullSpeed is more than 10 dB below the actuator's peak response (warnings keep exit 0)");
   sub->footer("Limits (docs/limits.md): " + std::to_string(kMaxImageFileBytes >> 20) + " MiB per file, " +
-              std::to_string(kMaxAttributesPerElement) + " attributes per element, nesting " +
+              std::to_string(kMaxXmlElements) + " elements and " + std::to_string(kMaxXmlAttributes) +
+              " attributes per file, " + std::to_string(kMaxAttributesPerElement) + " attributes per element (" +
+              std::to_string(kMaxUnknownAttributesPerElement) + " unknown ones kept), nesting " +
               std::to_string(kMaxXmlNestingDepth) + " deep, " + std::to_string(kMaxPolygonPoints) +
               " points per polygon; the first " + std::to_string(kMaxDiagnosticsPerFile) + " problems of a file are listed.");
   sub->callback([a, &exit_code] { exit_code = run_validate(*a); });

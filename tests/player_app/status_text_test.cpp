@@ -17,15 +17,15 @@ TEST(StatusText, ShowsTheRenderThreadPriorityOutcomeInWords) {
   StatusText text("drv2605l /dev/i2c-1", "display dpi", 4.0);
   LoopStats stats;
   stats.priority = RealtimePriority{80, false, EPERM};
-  EXPECT_TRUE(has_line(text.lines(stats, 0, false), "RENDER THREAD " + describe(stats.priority)));
+  EXPECT_TRUE(has_line(text.lines(stats, 0, false), "Render thread " + describe(stats.priority)));
   stats.priority = RealtimePriority{80, true, 0};
-  EXPECT_TRUE(has_line(text.lines(stats, 0, false), "RENDER THREAD SCHED_FIFO 80"));
+  EXPECT_TRUE(has_line(text.lines(stats, 0, false), "Render thread SCHED_FIFO 80"));
 }
 
 TEST(StatusText, SaysWhileTheDeviceIsGone) {
   StatusText text("hid /dev/hidraw3", "--px-per-mm", 5.0);
   const LoopStats stats;
-  const std::string gone = "DEVICE GONE: OUTPUT PAUSED, RECONNECTING";
+  const std::string gone = "Device gone: output paused, reconnecting";
   EXPECT_FALSE(has_line(text.lines(stats, 0, false), gone));
   EXPECT_TRUE(has_line(text.lines(stats, 0, true), gone));
 }
