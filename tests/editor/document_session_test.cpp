@@ -263,6 +263,11 @@ TEST(DocumentSessionImport, ThePictureWidthComesFromPhysOrDefaultsTo100Mm) {
     EXPECT_NEAR(*width_mm, 1000.0 * width_px / per_metre, 1e-9);
   }
   EXPECT_EQ(png_physical_width_mm(plain_png(40, 3, 0)), std::nullopt);  // no meaningful pHYs
+  std::string unknown_unit = plain_png(40, 3, 1000);  // pHYs giving only the aspect ratio
+  const std::size_t phys = unknown_unit.find("pHYs");
+  ASSERT_NE(phys, std::string::npos);
+  unknown_unit[phys + 4 + 8] = 0;
+  EXPECT_EQ(png_physical_width_mm(unknown_unit), std::nullopt);
   // Cut anywhere, the bytes give a width or nothing, never a read past the end.
   const std::string png = plain_png(40, 3, 2000);
   for (std::size_t n = 0; n < png.size(); ++n) {
