@@ -18,6 +18,7 @@ namespace vimg::editor {
 // Everything the cached picture depends on.
 struct CanvasCacheKey {
   std::uint64_t change = 0;            // the document's change_count (its value before a drag began)
+  std::uint64_t feel = 0;              // the actuator choice's generation (its weak marks are drawn in)
   double px_per_mm = 0.0;
   float origin_x_px = 0.0f, origin_y_px = 0.0f;  // where page (0, 0) is
   int width_px = 0, height_px = 0;     // the canvas region

@@ -241,10 +241,12 @@ void CanvasView::draw_picture(ImDrawList* dl) {
   if (!cache_ || !cache_->usable()) {
     draw_page(dl);
     draw_document(dl, elements);
+    playback_.draw_feel_marks(dl, view_);
     return;
   }
   CanvasCacheKey key;
   key.change = dragging ? drag_base_change_ : doc_.change_count();
+  key.feel = playback_.feel().generation();
   key.px_per_mm = view_.px_per_mm();
   const Point2Px origin = view_.page_origin_px();
   key.origin_x_px = origin.x;
@@ -263,6 +265,7 @@ void CanvasView::draw_picture(ImDrawList* dl) {
                            IM_COL32(60, 60, 66, 255));
     draw_page(picture);
     draw_document(picture, elements, key.left_out);
+    playback_.draw_feel_marks(picture, view_);
     cache_->end();
   }
   cache_->show(dl);

@@ -197,7 +197,6 @@ void CanvasView::draw(float x, float y, float w, float h) {
   dl->PushClipRect(ImVec2(canvas_x_, canvas_y_), ImVec2(canvas_x_ + canvas_w_, canvas_y_ + canvas_h_), true);
   draw_picture(dl);
   draw_selection(dl);
-  playback_.draw_feel_marks(dl, view_);
   playback_.draw_overlay(dl, view_);
 
   // The mouse.

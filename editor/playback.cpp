@@ -15,6 +15,7 @@
 namespace vimg::editor {
 namespace {
 constexpr double kTrailS = 1.5;
+constexpr std::size_t kMaxDashedMarks = 256;  // more weak primitives than this: solid outlines
 ImVec2 iv(Point2Px p) { return ImVec2(p.x, p.y); }
 }  // namespace
 
@@ -228,16 +229,25 @@ void Playback::draw_feel_marks(ImDrawList* dl, const Viewport& view) const {
     }
   };
   int n = 0;
+  const bool many = feel_.last_marks().size() > kMaxDashedMarks;
   for (const FeltMark& m : feel_.last_marks()) {
     const Point2Px p0 = view.to_px({m.bounds.x0_mm, m.bounds.y0_mm});
     const Point2Px p1 = view.to_px({m.bounds.x1_mm, m.bounds.y1_mm});
     const ImVec2 a(std::min(p0.x, p1.x) - 3.0f, std::min(p0.y, p1.y) - 3.0f);
     const ImVec2 b(std::max(p0.x, p1.x) + 3.0f, std::max(p0.y, p1.y) + 3.0f);
+    if (layout_.enabled()) layout_.print("weak_mark" + std::to_string(n++) + "_" + m.id, a.x, a.y, b.x - a.x, b.y - a.y);
+    const ImVec2 clip_min = dl->GetClipRectMin(), clip_max = dl->GetClipRectMax();
+    if (b.x < clip_min.x || b.y < clip_min.y || a.x > clip_max.x || a.y > clip_max.y) continue;
+    // Small marks (too few dashes to read) and many marks (dashes would cost more than the frame)
+    // are drawn solid.
+    if (many || (b.x - a.x < 4.0f * kDashPx && b.y - a.y < 4.0f * kDashPx)) {
+      dl->AddRect(a, b, colour, 0.0f, 0, 2.0f);
+      continue;
+    }
     dashed(a, ImVec2(b.x, a.y));
     dashed(ImVec2(b.x, a.y), b);
     dashed(b, ImVec2(a.x, b.y));
     dashed(ImVec2(a.x, b.y), a);
-    layout_.print("weak_mark" + std::to_string(n++) + "_" + m.id, a.x, a.y, b.x - a.x, b.y - a.y);
   }
 }
 

@@ -63,7 +63,8 @@ class Playback {
   const ActuatorFeel& feel() const { return feel_; }
   void update_feel(const Image& image, std::uint64_t change_count) { feel_.marks(image, change_count); }
   // A dashed outline in the palette's warning colour around every primitive that is weak on the
-  // actuator (as of the last update_feel), drawn over the canvas picture.
+  // actuator (as of the last update_feel); the canvas draws them into its cached picture (whose key
+  // holds the feel's generation). More than 256 marks, or small ones, are drawn solid.
   void draw_feel_marks(ImDrawList* dl, const Viewport& view) const;
 
   bool can_save_gesture() const { return play_ && !play_->recorder().empty(); }
