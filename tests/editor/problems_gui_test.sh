@@ -8,17 +8,8 @@ editor=$(realpath "$1")
 vimg=$(realpath "$2")
 art=$3
 here=$(cd "$(dirname "$0")" && pwd)
-for tool in Xvfb xdotool import python3; do
-  command -v "$tool" >/dev/null || { echo "FAIL: $tool is missing (bash scripts/setup.sh installs it)"; exit 1; }
-done
-rm -rf "$art"
-mkdir -p "$art/home"
-art=$(realpath "$art")
-export HOME="$art/home" XDG_CONFIG_HOME="$art/home/.config" XDG_STATE_HOME="$art/home/.state"
-source "$here/../xvfb_display.sh"
 source "$here/gui_driver.sh"
-trap cleanup EXIT
-start_xvfb 281 320 1400x900x24 "$art/xvfb.log"
+gui_setup 281 320
 
 cat >"$art/gain3.vimg" <<'VIMG'
 <?xml version="1.0" encoding="UTF-8"?>
