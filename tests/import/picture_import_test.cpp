@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 
 #include "png_fixture.hpp"
@@ -193,6 +196,49 @@ TEST(PictureImport, BadOptionsAndDamagedFilesAreErrors) {
   const ImportResult tall = import_picture(test::make_png(1, 100, 1, white(1, 100, 1)), "p.png", picture_options(200.0));
   ASSERT_FALSE(tall.ok());
   EXPECT_NE(tall.diagnostics.back().to_string().find("p.png: error:"), std::string::npos);
+}
+
+// A picture another project made: the Adwaita folder icon (48 x 48 RGBA, antialiased edges,
+// transparency; tests/import/data/README.md). At 1 mm per pixel, every pixel centre lies in exactly
+// the one SURFACE of its level (darkness over white, docs/import.md), or in none at level 0.
+TEST(PictureImport, AForeignIconPutsEveryPixelInTheSurfaceOfItsLevel) {
+  const std::filesystem::path file = VIMG_SOURCE_DIR "/tests/import/data/adwaita-folder-48.png";
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const DecodedPng png = decode_png_rgba(bytes, 1e6);
+  ASSERT_TRUE(png.error.empty()) << png.error;
+  const int levels = 4;
+  const ImportResult r = import_file(file, picture_options(png.width, levels));
+  ASSERT_TRUE(r.ok());
+  EXPECT_TRUE(parse_image_xml(write_image_xml(*r.image), "folder.vimg").ok());
+  const auto all = surfaces(*r.image);
+  ASSERT_GE(all.size(), 2u);
+  std::vector<Polygon> polygons;
+  for (const Surface* s : all) {
+    Polygon poly;
+    for (const Point2Mm& p : s->points) poly.vertices.push_back({p.x_mm, p.y_mm});
+    polygons.push_back(poly);
+  }
+  int covered = 0;
+  for (int y = 0; y < png.height; ++y) {
+    for (int x = 0; x < png.width; ++x) {
+      const std::uint8_t* p = png.rgba.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(png.width) + static_cast<std::size_t>(x)) * 4;
+      const double darkness = (1.0 - (0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]) / 255.0) * (p[3] / 255.0);
+      const long level = std::lround(darkness * levels);
+      std::vector<double> gains;
+      for (std::size_t i = 0; i < all.size(); ++i) {
+        if (contains(polygons[i], {x + 0.5, y + 0.5})) gains.push_back(all[i]->gain);
+      }
+      if (level == 0) {
+        EXPECT_TRUE(gains.empty()) << x << "," << y;
+      } else {
+        ASSERT_EQ(gains.size(), 1u) << x << "," << y;
+        EXPECT_DOUBLE_EQ(gains[0], static_cast<double>(level) / levels) << x << "," << y;
+        ++covered;
+      }
+    }
+  }
+  EXPECT_GT(covered, 500);  // the folder covers much of the icon
 }
 
 TEST(PictureImport, APngThatHoldsAVibroimageIsOpenedNotImported) {
