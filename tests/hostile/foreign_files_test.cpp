@@ -122,13 +122,17 @@ VimgRun check_file(const fs::path& file, const fs::path& scratch) {
   return validate;
 }
 
-const fs::path kScratch = fs::path(VIMG_BINARY_DIR) / "hostile_foreign_files";
+// One scratch folder per test: ctest runs the tests of this file in parallel, and each test
+// empties its folder before every convert.
+fs::path scratch_of_this_test() {
+  return fs::path(VIMG_BINARY_DIR) / "hostile_foreign_files" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+}
 
 TEST(ForeignFiles, InstalledPngFilesNeverCrashOrHangAndSayWhatIsWrong) {
   const auto files = installed_files("/usr/share", {".png"}, kFilesPerKind);
   if (files.empty()) GTEST_SKIP() << "no PNG files under /usr/share";
   for (const auto& file : files) {
-    const VimgRun v = check_file(file, kScratch);
+    const VimgRun v = check_file(file, scratch_of_this_test());
     if (v.exit_code == 1 && read_all(file).find("vibroimage") == std::string::npos) {
       // A plain picture: either it has no chunk, or it is damaged or over a limit, said as such.
       EXPECT_TRUE(v.out.find("no 'vibroimage' text chunk") != std::string::npos ||
@@ -144,7 +148,7 @@ TEST(ForeignFiles, InstalledXmlAndSvgFilesNeverCrashOrHangAndSayWhatIsWrong) {
   for (const auto& f : installed_files("/usr/share/icons", {".svg"}, kFilesPerKind / 3)) files.push_back(f);
   if (files.empty()) GTEST_SKIP() << "no XML files under /usr/share";
   for (const auto& file : files) {
-    const VimgRun v = check_file(file, kScratch);
+    const VimgRun v = check_file(file, scratch_of_this_test());
     EXPECT_EQ(v.exit_code, 1) << file << " is not a vibroimage\n" << v.out;
   }
 }
@@ -192,18 +196,18 @@ TEST(ForeignFiles, CraftedFilesGetTheMessageThatNamesTheirProblem) {
   for (const auto& e : fs::directory_iterator(kData)) in_folder += e.is_regular_file() ? 1 : 0;
   EXPECT_EQ(in_folder, std::size(crafted)) << "every crafted file has its expectation";
   for (const Crafted& c : crafted) {
-    const VimgRun v = check_file(kData / c.name, kScratch);
+    const VimgRun v = check_file(kData / c.name, scratch_of_this_test());
     EXPECT_EQ(v.exit_code, c.exit_code) << c.name << "\n" << v.out;
     EXPECT_NE(v.out.find(c.message), std::string::npos) << c.name << "\n" << v.out;
   }
 }
 
 TEST(ForeignFiles, AnAttributeOfEightMegabytesIsReadAndRefusedForWhatItIs) {
-  fs::create_directories(kScratch.parent_path());
+  fs::create_directories(scratch_of_this_test().parent_path());
   const fs::path file = fs::path(VIMG_BINARY_DIR) / "hostile_huge_attribute.vimg";
   std::ofstream(file) << "<vibroimage version=\"1.0\" width=\"10\" height=\"10\">\n<dot x=\"1\" y=\"1\" radius=\"1\" id=\""
                       << std::string(8u << 20, '7') << "\"/>\n</vibroimage>\n";
-  const VimgRun v = check_file(file, kScratch);
+  const VimgRun v = check_file(file, scratch_of_this_test());
   EXPECT_EQ(v.exit_code, 1) << v.out;
   EXPECT_NE(v.out.find(":2: error: <dot> id \"7777"), std::string::npos) << v.out;
   EXPECT_LT(v.out.size(), 2000u) << "the value is quoted cut short, not 8 MB of it";
