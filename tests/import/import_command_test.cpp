@@ -86,7 +86,8 @@ TEST_F(ImportCommand, SigintAndSigtermWriteNothingAndExit130And143) {
     const CommandRun r = test::run_command("{ '" VIMG_BINARY_DIR "/cli/vimg' import " + path("big.png") + " --out " + path("big.vimg") +
                                            " --width-mm 100 --levels 16 & sleep 0.2; kill -" + signal + " $!; wait $!; echo exit=$?; }");
     EXPECT_NE(r.out.find("exit=" + std::to_string(code)), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("interrupted"), std::string::npos) << r.out;
+    // The message comes from the import's own handler; a signal that arrives before it is installed
+    // (a slow start, e.g. under the sanitizers) meets vimg's handler, which exits as quietly.
   }
   for (const auto& entry : std::filesystem::directory_iterator(dir_)) {
     EXPECT_EQ(entry.path().filename(), "big.png") << "left behind: " << entry.path();
