@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "storage/export/json_writer.hpp"
 
@@ -22,6 +23,29 @@ void parameter(JsonWriter& w, const char* id, double value) {
   w.string(id);
   w.key("ParameterValue");
   w.number(value);
+  w.end_object();
+}
+
+// One AHAP event: {"Event": {Time, EventType, [EventDuration], EventParameters: intensity, sharpness}}.
+void event(JsonWriter& w, double time_s, const char* type, std::optional<double> duration_s, double intensity,
+           double sharpness) {
+  w.begin_object();
+  w.key("Event");
+  w.begin_object();
+  w.key("Time");
+  w.number(time_s);
+  w.key("EventType");
+  w.string(type);
+  if (duration_s) {
+    w.key("EventDuration");
+    w.number(*duration_s);
+  }
+  w.key("EventParameters");
+  w.begin_array();
+  parameter(w, "HapticIntensity", intensity);
+  parameter(w, "HapticSharpness", sharpness);
+  w.end_array();
+  w.end_object();
   w.end_object();
 }
 
@@ -77,40 +101,12 @@ std::string write_ahap(const HapticClip& clip) {
   w.begin_array();
   // The continuous events carry intensity 1 and sharpness 0; the curves set both over time.
   for (double t = 0.0; t < clip.duration_s; t += kAhapMaxContinuousS) {
-    w.begin_object();
-    w.key("Event");
-    w.begin_object();
-    w.key("Time");
-    w.number(t);
-    w.key("EventType");
-    w.string("HapticContinuous");
-    w.key("EventDuration");
-    w.number(std::min(kAhapMaxContinuousS, clip.duration_s - t));
-    w.key("EventParameters");
-    w.begin_array();
-    parameter(w, "HapticIntensity", 1.0);
-    parameter(w, "HapticSharpness", 0.0);
-    w.end_array();
-    w.end_object();
-    w.end_object();
+    event(w, t, "HapticContinuous", std::min(kAhapMaxContinuousS, clip.duration_s - t), 1.0, 0.0);
   }
   curves(w, "HapticIntensityControl", clip.amplitude);
   curves(w, "HapticSharpnessControl", clip.frequency);
   for (const ClipTransient& t : clip.transients) {
-    w.begin_object();
-    w.key("Event");
-    w.begin_object();
-    w.key("Time");
-    w.number(t.time_s);
-    w.key("EventType");
-    w.string("HapticTransient");
-    w.key("EventParameters");
-    w.begin_array();
-    parameter(w, "HapticIntensity", std::sqrt(unit(t.amplitude)));
-    parameter(w, "HapticSharpness", std::sqrt(unit(t.frequency)));
-    w.end_array();
-    w.end_object();
-    w.end_object();
+    event(w, t.time_s, "HapticTransient", std::nullopt, std::sqrt(unit(t.amplitude)), std::sqrt(unit(t.frequency)));
   }
   w.end_array();
   w.end_object();
