@@ -1,9 +1,9 @@
 #include "editor/core/document_session.hpp"
 
-#include <cctype>
 #include <cstdint>
 
 #include "editor/core/document_problems.hpp"
+#include "storage/file_extension.hpp"
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
 #include "storage/png_codec.hpp"
@@ -56,9 +56,7 @@ std::optional<double> png_physical_width_mm(std::string_view png_bytes) {
 
 ImportQuestion import_question(const std::string& path) {
   ImportQuestion q;
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".png") return q;
+  if (lower_extension(path) != ".png") return q;
   q.picture = true;
   const FileReadResult read = read_regular_file(path, kMaxImageFileBytes);
   if (!read.bytes) return q;  // the import reports it
