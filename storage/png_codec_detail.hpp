@@ -1,0 +1,48 @@
+#pragma once
+// Internal to storage/png_*.cpp: the libpng error sink and callbacks, the libpng read pass shared by
+// picture decoding and text reading, and the chunk walking of the raw bytes. Not part of the API.
+#include <png.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "storage/limits.hpp"
+
+namespace vimg::png_detail {
+
+struct ErrorSink {
+  char message[256] = {};
+};
+
+extern "C" void on_png_error(png_structp png, png_const_charp message);
+extern "C" void on_png_warning(png_structp, png_const_charp);
+
+struct ReadSource {
+  const unsigned char* data = nullptr;
+  std::size_t size = 0;
+  std::size_t offset = 0;
+};
+
+struct ReadState {
+  ReadSource source;
+  unsigned char* row = nullptr;  // malloc'ed; freed by the caller on every path
+  // decode_png_rgba only: the whole picture as 8-bit RGBA rows (malloc'ed, freed by the caller).
+  bool keep_pixels = false;
+  double max_pixels = kMaxDecodedPngPixels;
+  unsigned char* pixels = nullptr;
+  png_uint_32 width = 0;
+  png_uint_32 height = 0;
+};
+
+// Returns true when the whole PNG decodes; no C++ objects live here.
+bool decode_text(ReadState* state, ErrorSink* sink);
+
+// libpng allocates a chunk's declared length before reading it; a chunk can never be longer than
+// the bytes that follow it, so such lies are caught here, before any allocation.
+bool chunk_lengths_fit(std::string_view bytes, ErrorSink* sink);
+
+// The big-endian 32-bit number at `pos` of `bytes`.
+std::uint32_t be32(std::string_view bytes, std::size_t pos);
+
+}  // namespace vimg::png_detail
