@@ -13,14 +13,8 @@ std::unique_ptr<FeltAnalysis> load_felt_analysis(const std::string& profile_path
 }
 
 void add_felt_warnings(const Image& image, const FeltAnalysis& analysis, DiagnosticList& out) {
-  for (const FeltWarning& w : felt_warnings(image, analysis)) {
-    const int line = w.element->source_line;
-    if (!out.keeps(line)) {
-      out.count(Diagnostic::Severity::warning);
-      continue;
-    }
-    out.warning(line, w.message);
-  }
+  // The messages are built already: the list keeps or counts each one itself.
+  for (const FeltWarning& w : felt_warnings(image, analysis)) out.warning(w.element->source_line, w.message);
 }
 
 void print_felt_table(const Image& image, const FeltAnalysis& analysis) {
