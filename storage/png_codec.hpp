@@ -38,6 +38,10 @@ struct PngText {
 // vibroimage chunk are each reported as such.
 PngText read_png_text(std::string_view bytes);
 
+// The width in mm a PNG's pHYs chunk gives its pixels (unit: metre), when it comes before the
+// pixels and gives a width in (0, kMaxCanvasMm]; nothing otherwise.
+std::optional<double> png_physical_width_mm(std::string_view bytes);
+
 struct DecodedPng {
   int width = 0;
   int height = 0;

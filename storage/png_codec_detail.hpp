@@ -45,4 +45,26 @@ bool chunk_lengths_fit(std::string_view bytes, ErrorSink* sink);
 // The big-endian 32-bit number at `pos` of `bytes`.
 std::uint32_t be32(std::string_view bytes, std::size_t pos);
 
+// One chunk of the raw bytes: its type, its data, and where its CRC sits.
+struct RawChunk {
+  std::string_view type;
+  std::string_view data;
+  std::size_t pos = 0;  // of its length field
+};
+
+// Calls visit(chunk) for each chunk after the signature, in order, until IEND, a chunk cut short,
+// or visit returning false.
+template <class Visit>
+void for_each_chunk(std::string_view bytes, Visit&& visit) {
+  std::size_t pos = 8;
+  while (pos + 12 <= bytes.size()) {
+    const std::uint32_t length = be32(bytes, pos);
+    if (length > bytes.size() - pos - 12) return;
+    const std::string_view type = bytes.substr(pos + 4, 4);
+    if (type == "IEND") return;
+    if (!visit(RawChunk{type, bytes.substr(pos + 8, length), pos})) return;
+    pos += 12 + static_cast<std::size_t>(length);
+  }
+}
+
 }  // namespace vimg::png_detail

@@ -51,24 +51,42 @@ struct TextChunk {
 // Every vibroimage text chunk before IEND (chunk_lengths_fit() has checked the lengths).
 std::vector<TextChunk> vibroimage_chunks(std::string_view bytes) {
   std::vector<TextChunk> found;
-  std::size_t pos = 8;
-  while (pos + 12 <= bytes.size()) {
-    const std::uint32_t length = be32(bytes, pos);
-    if (length > bytes.size() - pos - 12) break;
-    const std::string_view type = bytes.substr(pos + 4, 4);
-    if (type == "IEND") break;
-    const std::string_view data = bytes.substr(pos + 8, length);
-    if ((type == "tEXt" || type == "zTXt" || type == "iTXt") && data.size() > kPngTextKeyword.size() &&
+  png_detail::for_each_chunk(bytes, [&](const png_detail::RawChunk& c) {
+    const std::string_view data = c.data;
+    if ((c.type == "tEXt" || c.type == "zTXt" || c.type == "iTXt") && data.size() > kPngTextKeyword.size() &&
         data.substr(0, kPngTextKeyword.size()) == kPngTextKeyword && data[kPngTextKeyword.size()] == '\0') {
-      const std::string_view typed = bytes.substr(pos + 4, 4 + length);
+      const std::string_view typed = bytes.substr(c.pos + 4, 4 + data.size());
       const auto crc = static_cast<std::uint32_t>(
           crc32(0, reinterpret_cast<const Bytef*>(typed.data()), static_cast<uInt>(typed.size())));
-      found.push_back({type, data.substr(kPngTextKeyword.size() + 1), crc == be32(bytes, pos + 8 + length)});
+      found.push_back({c.type, data.substr(kPngTextKeyword.size() + 1), crc == be32(bytes, c.pos + 8 + data.size())});
     }
-    pos += 12 + static_cast<std::size_t>(length);
-  }
+    return true;
+  });
   return found;
 }
+
+}  // namespace
+
+std::optional<double> png_physical_width_mm(std::string_view bytes) {
+  if (!looks_like_png(bytes)) return std::nullopt;
+  std::optional<std::uint32_t> width_px;
+  std::optional<double> width_mm;
+  png_detail::for_each_chunk(bytes, [&](const png_detail::RawChunk& c) {
+    if (c.type == "IHDR" && c.data.size() >= 4) width_px = be32(c.data, 0);
+    if (c.type == "pHYs" && c.data.size() == 9 && width_px && *width_px > 0) {
+      const std::uint32_t per_metre_x = be32(c.data, 0);
+      const bool metre = c.data[8] == 1;
+      if (!metre || per_metre_x == 0) return false;
+      const double mm = 1000.0 * *width_px / per_metre_x;
+      if (mm > 0.0 && mm <= kMaxCanvasMm) width_mm = mm;
+      return false;
+    }
+    return c.type != "IDAT";  // pHYs comes before the pixels
+  });
+  return width_mm;
+}
+
+namespace {
 
 // Inflates zlib data into `out`, never past kMaxImageFileBytes + 1 bytes. Returns the problem, or
 // an empty string.

@@ -20,40 +20,6 @@ std::string join_diagnostics(const std::vector<Diagnostic>& diagnostics) {
   return out;
 }
 
-namespace {
-
-std::uint32_t big_endian_u32(std::string_view bytes, std::size_t at) {
-  std::uint32_t v = 0;
-  for (std::size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
-  return v;
-}
-
-}  // namespace
-
-std::optional<double> png_physical_width_mm(std::string_view png_bytes) {
-  if (!looks_like_png(png_bytes)) return std::nullopt;
-  std::optional<std::uint32_t> width_px;
-  std::size_t at = 8;  // after the signature: chunks of length, type, data, CRC
-  while (at + 12 <= png_bytes.size()) {
-    const std::uint32_t length = big_endian_u32(png_bytes, at);
-    const std::string_view type = png_bytes.substr(at + 4, 4);
-    if (length > png_bytes.size() - at - 12) return std::nullopt;  // cut short
-    const std::size_t data = at + 8;
-    if (type == "IHDR" && length >= 4) width_px = big_endian_u32(png_bytes, data);
-    if (type == "pHYs" && length == 9 && width_px && *width_px > 0) {
-      const std::uint32_t per_metre_x = big_endian_u32(png_bytes, data);
-      const bool metre = png_bytes[data + 8] == 1;
-      if (!metre || per_metre_x == 0) return std::nullopt;
-      const double width_mm = 1000.0 * *width_px / per_metre_x;
-      if (!(width_mm > 0.0) || width_mm > kMaxCanvasMm) return std::nullopt;
-      return width_mm;
-    }
-    if (type == "IDAT" || type == "IEND") return std::nullopt;  // pHYs comes before the pixels
-    at = data + length + 4;
-  }
-  return std::nullopt;
-}
-
 ImportQuestion import_question(const std::string& path) {
   ImportQuestion q;
   if (lower_extension(path) != ".png") return q;

@@ -97,8 +97,6 @@ struct ImportQuestion {
   double width_mm = 100.0;
 };
 ImportQuestion import_question(const std::string& path);
-// The width in mm a PNG's pHYs chunk gives its pixels (unit: metre); nothing without one.
-std::optional<double> png_physical_width_mm(std::string_view png_bytes);
 
 // The diagnostics one a line, as the problem dialog shows them.
 std::string join_diagnostics(const std::vector<Diagnostic>& diagnostics);
