@@ -13,6 +13,7 @@
 #include "hal/actuator_profile.hpp"
 #include "hal/drv2605l_trace_sink.hpp"
 #include "hal/rest_on_exit.hpp"
+#include "player/actuator_sink.hpp"
 #include "player/clip_export/clip_sink.hpp"
 #include "player/drive_sinks.hpp"
 #include "player/gesture.hpp"
@@ -92,11 +93,9 @@ int run_render(const RenderArgs& a) {
   OfflineRenderOptions options;
   options.sample_rate_hz = static_cast<double>(a.rate_hz);
   const OutputSignal signal = a.signal == "acceleration" ? OutputSignal::acceleration : OutputSignal::drive;
-  ActuatorChain chain(profile.response, options.sample_rate_hz, signal, a.equalize);
   if (a.equalize && profile.response.model == ResponseModel::erm) {
     std::fprintf(stderr, "vimg render: warning: --equalize does nothing for an erm profile (a filter cannot reshape a motor's spin-up)\n");
   }
-  if (!chain.is_identity()) options.actuator = &chain;
   // SIGINT/SIGTERM only set a flag; the render stops at the next block and the output is abandoned.
   const SignalRestScope signals;
   options.should_stop = [] { return rest_requested(); };
@@ -109,8 +108,10 @@ int run_render(const RenderArgs& a) {
       return kExitFailure;
     }
   }
-  const OfflineRenderResult r =
-      render_gesture(*scene, *gesture.gesture, trace ? static_cast<DriveSink&>(*trace) : *sink, options);
+  // The drive through the actuator chain (the equalizer, the modelled acceleration), then the
+  // register trace if any, then the file.
+  ActuatorSink shaped(trace ? static_cast<DriveSink&>(*trace) : *sink, profile.response, signal, a.equalize);
+  const OfflineRenderResult r = render_gesture(*scene, *gesture.gesture, shaped, options);
   if (r.interrupted) {
     sink->abort();
     std::fprintf(stderr, "vimg render: interrupted; %s not written\n", a.out.c_str());

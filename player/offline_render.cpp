@@ -24,7 +24,6 @@ OfflineRenderResult render_gesture(const Scene& scene, const Gesture& gesture, D
 
   std::vector<FingerStep> steps;
   std::vector<float> block(std::max<std::size_t>(1, options.block_samples));
-  if (options.actuator != nullptr) options.actuator->reset();
   sink.open(rate);
   std::uint64_t n = 0;
   bool done = false;
@@ -42,7 +41,7 @@ OfflineRenderResult render_gesture(const Scene& scene, const Gesture& gesture, D
       playback.steps_at(t, n == 0 ? 0.0 : dt, steps);
       const double d = mixer.step(steps, t, dt);
       const auto drive = static_cast<float>(soft_limit(d));
-      block[filled++] = options.actuator != nullptr ? options.actuator->process(drive) : drive;
+      block[filled++] = drive;
       ++n;
       if ((t >= end_s && steps.empty() && mixer.active_contacts() == 0) || t >= hard_end_s) {
         done = true;

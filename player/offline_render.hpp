@@ -7,7 +7,6 @@
 #include "player/drive_sink.hpp"
 #include "player/gesture.hpp"
 #include "player/scene.hpp"
-#include "primitives/actuator/actuator_chain.hpp"
 
 namespace vimg {
 
@@ -20,10 +19,6 @@ struct OfflineRenderOptions {
   // Asked before every block (e.g. "has SIGINT arrived?"); true ends the render at once, without
   // closing the sink, so that the caller can abandon the output. Null: never.
   bool (*should_stop)() = nullptr;
-  // What becomes of each limited drive sample before the sink (`--signal`, `--equalize`): the
-  // equalized drive or the modelled acceleration (primitives/actuator/actuator_chain.hpp).
-  // Null: the drive itself. Designed for sample_rate_hz; the render resets it first.
-  ActuatorChain* actuator = nullptr;
 };
 
 struct OfflineRenderResult {

@@ -15,7 +15,7 @@
 #include "hal/actuator_profile.hpp"
 #include "hal/output_spec.hpp"
 #include "hal/rest_on_exit.hpp"
-#include "player/equalizing_sink.hpp"
+#include "player/actuator_sink.hpp"
 #include "player/realtime_renderer.hpp"
 #include "player/scene.hpp"
 #include "realtime/realtime_priority.hpp"
@@ -146,8 +146,8 @@ int run(const PlayerArgs& args) {
   // renderer.start(), stopped by renderer.stop()): it formats the driver's fault codes into the
   // messages taken below and reconnects a lost device, off the render thread.
   // --equalize: the drive goes through the actuator's equalizer on its way to the output (designed
-  // in open(), before the render thread starts; real-time safe, player/equalizing_sink.hpp).
-  EqualizingSink equalizing(output->sink(), profile.response);
+  // in open(), before the render thread starts; real-time safe, player/actuator_sink.hpp).
+  ActuatorSink equalizing(output->sink(), profile.response, OutputSignal::drive, true);
   DriveSink& drive_path = args.equalize ? static_cast<DriveSink&>(equalizing) : output->sink();
   RealtimeRenderer renderer(drive_path, realtime);
   renderer.set_scene(scene);

@@ -81,7 +81,7 @@ check_wav() {
 drag_run out
 check_wav out 400
 # The same drag with the LRA profile and --equalize: the equalized drive reaches the WAV, bounded
-# (the equalizer never boosts; its exact output is tested in tests/player/equalizing_sink_test.cpp).
+# (the equalizer never boosts; its exact output is tested in tests/player/actuator_sink_test.cpp).
 drag_run equalized --actuator "$(dirname "$0")/../../../assets/profiles/lra-175hz-drv2605l.xml" --equalize
 check_wav equalized 100
 # SIGTERM: the player leaves its loop, puts the output to rest, completes the file and exits 143.

@@ -1,19 +1,19 @@
-#include "player/equalizing_sink.hpp"
+#include "player/actuator_sink.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace vimg {
 
-void EqualizingSink::open(double sample_rate_hz) {
+void ActuatorSink::open(double sample_rate_hz) {
   sample_rate_hz_ = sample_rate_hz;
-  chain_.emplace(params_, sample_rate_hz, OutputSignal::drive, true);
+  chain_.emplace(params_, sample_rate_hz, signal_, equalize_);
   output_.open(sample_rate_hz);
   const auto longest = static_cast<std::size_t>(std::max(1.0, std::ceil(sample_rate_hz / 50.0)));
   buffer_.assign(std::max(longest, output_.min_block_samples()), 0.0f);
 }
 
-void EqualizingSink::write(std::span<const float> drive, double block_start_time_s) {
+void ActuatorSink::write(std::span<const float> drive, double block_start_time_s) {
   if (!chain_ || chain_->is_identity()) {
     output_.write(drive, block_start_time_s);
     return;

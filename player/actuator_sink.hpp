@@ -1,9 +1,10 @@
 #pragma once
-// A DriveSink in front of the output that equalizes the real-time drive for the actuator
-// (`vimg-player --actuator P --equalize`, docs/actuators.md "Equalizer"): every sample goes through
-// ActuatorChain(params, rate, OutputSignal::drive, equalize = true), the same chain as
-// `vimg render --equalize`, so the player drives the actuator as the render's WAV would. The chain
-// keeps its state from block to block and starts at rest on open().
+// A DriveSink in front of the output that runs every sample through the actuator chain
+// (primitives/actuator/actuator_chain.hpp): the equalizer (`--equalize`) and/or the modelled
+// acceleration (`vimg render --signal acceleration`). The one place the chain meets a drive
+// stream: `vimg render` puts it before its file, `vimg-player --equalize` before its output, so the
+// player drives the actuator as the render's WAV would. The chain keeps its state from block to
+// block and starts at rest on open().
 //
 // Threads: construction and open() on the control thread, before the stream starts (open() designs
 // the chain at the stream's rate and sizes the block buffer for the largest block the real-time
@@ -20,9 +21,10 @@
 
 namespace vimg {
 
-class EqualizingSink final : public DriveSink {
+class ActuatorSink final : public DriveSink {
  public:
-  EqualizingSink(DriveSink& output, const ResponseParams& params) : output_(output), params_(params) {}
+  ActuatorSink(DriveSink& output, const ResponseParams& params, OutputSignal signal, bool equalize)
+      : output_(output), params_(params), signal_(signal), equalize_(equalize) {}
 
   void open(double sample_rate_hz) override;
   void write(std::span<const float> drive, double block_start_time_s) override;
@@ -30,13 +32,15 @@ class EqualizingSink final : public DriveSink {
   bool paces_stream() const override { return output_.paces_stream(); }
   std::size_t min_block_samples() const override { return output_.min_block_samples(); }
 
-  // False when the chain is the identity for this actuator (ideal, voice coil, ERM): the drive
-  // passes unchanged.
-  bool equalizes() const { return chain_ && !chain_->is_identity(); }
+  // False when the chain is the identity (e.g. equalizing an ideal, voice-coil or ERM actuator, or
+  // the drive of any): the drive passes unchanged.
+  bool changes_drive() const { return chain_ && !chain_->is_identity(); }
 
  private:
   DriveSink& output_;
   ResponseParams params_;
+  OutputSignal signal_;
+  bool equalize_;
   std::optional<ActuatorChain> chain_;
   std::vector<float> buffer_;
   double sample_rate_hz_ = 0.0;

@@ -1,7 +1,7 @@
-// The player's --equalize path: the drive the output receives is the equalizer applied to the
-// rendered drive, sample for sample, as `vimg render --equalize` applies it offline; without an
-// equalizing actuator the drive passes unchanged.
-#include "player/equalizing_sink.hpp"
+// The actuator chain on a drive stream (vimg-player --equalize, vimg render --signal/--equalize):
+// the output receives the chain applied to the rendered drive, sample for sample, whatever the
+// blocks; without an equalizing actuator the drive passes unchanged.
+#include "player/actuator_sink.hpp"
 
 #include <gtest/gtest.h>
 
@@ -31,7 +31,7 @@ void write_blocks(DriveSink& sink, const std::vector<float>& drive, const std::v
   }
 }
 
-TEST(EqualizingSink, TheOutputGetsTheEqualizerOfTheDriveAsAnOfflineRenderDoes) {
+TEST(ActuatorSink, TheOutputGetsTheEqualizerOfTheDriveAsAnOfflineRenderDoes) {
   const std::vector<float> drive = drive_signal(4000);
   ActuatorChain offline(lra(), kRate, OutputSignal::drive, true);
   std::vector<float> expected(drive.size());
@@ -40,9 +40,9 @@ TEST(EqualizingSink, TheOutputGetsTheEqualizerOfTheDriveAsAnOfflineRenderDoes) {
   // Blocks of 1 ms, of 1/50 s, and longer than the sink's buffer (split inside).
   for (const std::vector<std::size_t>& sizes : {std::vector<std::size_t>{8}, {160, 7, 33}, {1000}}) {
     MemorySink memory;
-    EqualizingSink sink(memory, lra());
+    ActuatorSink sink(memory, lra(), OutputSignal::drive, true);
     sink.open(kRate);
-    EXPECT_TRUE(sink.equalizes());
+    EXPECT_TRUE(sink.changes_drive());
     write_blocks(sink, drive, sizes);
     sink.close();
     ASSERT_EQ(memory.samples().size(), drive.size());
@@ -58,14 +58,14 @@ TEST(EqualizingSink, TheOutputGetsTheEqualizerOfTheDriveAsAnOfflineRenderDoes) {
   EXPECT_GT(diff, 100.0);
 }
 
-TEST(EqualizingSink, ABlockLongerThanTheBufferKeepsItsTimes) {
+TEST(ActuatorSink, ABlockLongerThanTheBufferKeepsItsTimes) {
   struct Times final : DriveSink {
     std::vector<std::pair<double, std::size_t>> blocks;
     void open(double) override {}
     void write(std::span<const float> d, double t) override { blocks.emplace_back(t, d.size()); }
     void close() override {}
   } times;
-  EqualizingSink sink(times, lra());
+  ActuatorSink sink(times, lra(), OutputSignal::drive, true);
   sink.open(kRate);
   const std::vector<float> drive = drive_signal(400);  // the buffer holds 1/50 s = 160 samples
   sink.write(drive, 2.0);
@@ -74,14 +74,14 @@ TEST(EqualizingSink, ABlockLongerThanTheBufferKeepsItsTimes) {
   EXPECT_EQ(times.blocks[2].second, 80u);
 }
 
-TEST(EqualizingSink, ActuatorsWithAFlatBandPassTheDriveUnchanged) {
+TEST(ActuatorSink, ActuatorsWithAFlatBandPassTheDriveUnchanged) {
   for (const ResponseModel model : {ResponseModel::ideal, ResponseModel::voice_coil, ResponseModel::erm}) {
     ResponseParams p;
     p.model = model;
     MemorySink memory;
-    EqualizingSink sink(memory, p);
+    ActuatorSink sink(memory, p, OutputSignal::drive, true);
     sink.open(kRate);
-    EXPECT_FALSE(sink.equalizes());
+    EXPECT_FALSE(sink.changes_drive());
     const std::vector<float> drive = drive_signal(1000);
     write_blocks(sink, drive, {64});
     EXPECT_EQ(memory.samples(), drive);
