@@ -47,14 +47,26 @@ LoadResult load_image_file(const std::filesystem::path& path) {
 
 std::optional<std::string> save_image_file(const Image& image, const std::filesystem::path& path,
                                            const SaveOptions& options) {
-  const std::string xml = write_image_xml(image);
-  if (!has_png_extension(path)) return write_file_atomically(path, xml);
-  RgbRaster raster;
-  if (auto error = draw_picture(image, options.scale_px_per_mm, raster)) return path.string() + ": " + *error;
-  const auto pixels_per_metre = static_cast<std::uint32_t>(std::lround(options.scale_px_per_mm * 1000.0));
-  const EncodedPng png = encode_png(raster, pixels_per_metre, xml);
+  if (!has_png_extension(path)) return write_file_atomically(path, write_image_xml(image));
+  // The picture is drawn and compressed band by band while the XML is written, on every core;
+  // the pieces go to the file in order, never copied into one block.
+  const PictureBands bands(image, options.scale_px_per_mm);
+  if (bands.error()) return path.string() + ": " + *bands.error();
+  PngSource source;
+  source.width_px = bands.size().width_px;
+  source.height_px = bands.size().height_px;
+  source.pixels_per_metre = static_cast<std::uint32_t>(std::lround(options.scale_px_per_mm * 1000.0));
+  source.band_rows = PictureBands::kRows;
+  source.draw_band = [&bands](int band, std::uint8_t* first_row, std::size_t stride) {
+    PictureWork work;
+    bands.draw_band(band, first_row, stride, work);
+  };
+  source.xml = [&image] { return write_image_xml(image); };
+  const PngPieces png = encode_png_pieces(source, options.threads);
   if (!png.error.empty()) return path.string() + ": " + png.error;
-  return write_file_atomically(path, png.bytes);
+  AtomicFileWriter writer(path);
+  for (const std::string& piece : png.pieces) writer.write(piece);
+  return writer.commit();
 }
 
 }  // namespace vimg

@@ -49,6 +49,7 @@ std::string write_image_xml(const Image& image);
 
 struct SaveOptions {
   double scale_px_per_mm = 10.0;  // PNG only
+  int threads = 0;                // PNG only: threads drawing and compressing; <= 0: one per core
 };
 
 // Saves as XML or PNG, chosen by the extension (`.png`, anything else is XML). Atomic: the target

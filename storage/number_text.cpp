@@ -34,11 +34,20 @@ ParsedNumber parse_decimal(std::string_view text) {
   return value;
 }
 
-std::string format_decimal(double value) {
+void append_decimal(std::string& out, double value) {
   std::array<char, 64> buffer{};
   const auto [ptr, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  if (ec != std::errc()) return "0";
-  return std::string(buffer.data(), ptr);
+  if (ec != std::errc()) {
+    out += '0';
+    return;
+  }
+  out.append(buffer.data(), ptr);
+}
+
+std::string format_decimal(double value) {
+  std::string text;
+  append_decimal(text, value);
+  return text;
 }
 
 }  // namespace vimg

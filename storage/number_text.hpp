@@ -17,5 +17,7 @@ ParsedNumber parse_decimal(std::string_view text);
 
 // The shortest decimal text that parse_decimal reads back to exactly `value` (finite values).
 std::string format_decimal(double value);
+// The same text, appended to `out` without a temporary string (writers of large files).
+void append_decimal(std::string& out, double value);
 
 }  // namespace vimg

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "storage/limits.hpp"
@@ -73,8 +74,6 @@ void draw_item(Painter& painter, const Element& e) {
   }
 }
 
-constexpr int kBandRows = 64;
-
 }  // namespace
 
 std::optional<std::string> picture_size(const Image& image, double scale_px_per_mm, PictureSize& size) {
@@ -92,31 +91,25 @@ std::optional<std::string> picture_size(const Image& image, double scale_px_per_
   return std::nullopt;
 }
 
-std::optional<std::string> draw_picture(const Image& image, double scale_px_per_mm, RgbRaster& raster,
-                                        PictureWork* work) {
-  PictureSize size;
-  if (auto error = picture_size(image, scale_px_per_mm, size)) return error;
-  raster.width = size.width_px;
-  raster.height = size.height_px;
-  raster.rgb.assign(static_cast<std::size_t>(size.width_px) * static_cast<std::size_t>(size.height_px) * 3,
-                    palette::kBackground.r);
-  static_assert(palette::kBackground.r == palette::kBackground.g && palette::kBackground.g == palette::kBackground.b,
-                "one fill value");
-  PictureWork unused;
-  Painter painter(raster, scale_px_per_mm, work != nullptr ? *work : unused);
+PictureBands::PictureBands(const Image& image, double scale_px_per_mm) : scale_(scale_px_per_mm) {
+  error_ = picture_size(image, scale_px_per_mm, size_);
+  first_of_band_.assign(1, 0);
+  if (error_) return;
   std::vector<Item> items;
   collect(image.children, scale_px_per_mm, items);
   // Items whose rows miss the canvas (or are not numbers) are never drawn.
+  const int height = size_.height_px;
   std::erase_if(items, [&](const Item& item) {
-    return !(item.bottom_px >= 0.0) || !(item.top_px <= raster.height) || !(item.top_px <= item.bottom_px);
+    return !(item.bottom_px >= 0.0) || !(item.top_px <= height) || !(item.top_px <= item.bottom_px);
   });
   // Each band's items in paint order, found once (not by testing every item in every band).
-  const std::size_t bands = static_cast<std::size_t>((raster.height + kBandRows - 1) / kBandRows);
-  std::vector<std::uint32_t> count(bands + 1, 0);
+  const std::size_t bands = static_cast<std::size_t>((height + kRows - 1) / kRows);
+  std::vector<std::uint32_t>& count = first_of_band_;
+  count.assign(bands + 1, 0);
   const auto band_range = [&](const Item& item, std::size_t& first, std::size_t& last) {
-    // A band [b, b + kBandRows) is visited when top_px <= b + kBandRows and bottom_px >= b.
-    const double lo = std::floor((item.top_px - kBandRows) / kBandRows);
-    const double hi = std::floor(item.bottom_px / kBandRows);
+    // A band [b, b + kRows) is visited when top_px <= b + kRows and bottom_px >= b.
+    const double lo = std::floor((item.top_px - kRows) / kRows);
+    const double hi = std::floor(item.bottom_px / kRows);
     first = static_cast<std::size_t>(std::clamp(lo, 0.0, static_cast<double>(bands - 1)));
     last = static_cast<std::size_t>(std::clamp(hi, 0.0, static_cast<double>(bands - 1)));
   };
@@ -126,17 +119,41 @@ std::optional<std::string> draw_picture(const Image& image, double scale_px_per_
     for (std::size_t b = first; b <= last; ++b) ++count[b + 1];
   }
   for (std::size_t b = 0; b < bands; ++b) count[b + 1] += count[b];
-  std::vector<const Element*> by_band(count[bands]);
+  by_band_.resize(count[bands]);
   std::vector<std::uint32_t> fill(count.begin(), count.end() - 1);
   for (const Item& item : items) {
     std::size_t first = 0, last = 0;
     band_range(item, first, last);
-    for (std::size_t b = first; b <= last; ++b) by_band[fill[b]++] = item.element;
+    for (std::size_t b = first; b <= last; ++b) by_band_[fill[b]++] = item.element;
   }
-  for (std::size_t b = 0; b < bands; ++b) {
-    const int band = static_cast<int>(b) * kBandRows;
-    painter.set_band(band, std::min(raster.height, band + kBandRows));
-    for (std::uint32_t i = count[b]; i < count[b + 1]; ++i) draw_item(painter, *by_band[i]);
+}
+
+int PictureBands::rows_in_band(int band) const { return std::min(kRows, size_.height_px - band * kRows); }
+
+void PictureBands::draw_band(int band, std::uint8_t* first_row, std::size_t stride, PictureWork& work) const {
+  const int row_begin = band * kRows;
+  const int rows = rows_in_band(band);
+  const std::size_t row_bytes = static_cast<std::size_t>(size_.width_px) * 3;
+  static_assert(palette::kBackground.r == palette::kBackground.g && palette::kBackground.g == palette::kBackground.b,
+                "one fill value");
+  for (int r = 0; r < rows; ++r) std::memset(first_row + static_cast<std::size_t>(r) * stride, palette::kBackground.r, row_bytes);
+  Painter painter(size_.width_px, size_.height_px, scale_, work);
+  painter.set_band(row_begin, row_begin + rows, first_row, stride);
+  const auto b = static_cast<std::size_t>(band);
+  for (std::uint32_t i = first_of_band_[b]; i < first_of_band_[b + 1]; ++i) draw_item(painter, *by_band_[i]);
+}
+
+std::optional<std::string> draw_picture(const Image& image, double scale_px_per_mm, RgbRaster& raster,
+                                        PictureWork* work) {
+  const PictureBands bands(image, scale_px_per_mm);
+  if (bands.error()) return bands.error();
+  raster.width = bands.size().width_px;
+  raster.height = bands.size().height_px;
+  raster.rgb.resize(static_cast<std::size_t>(raster.width) * static_cast<std::size_t>(raster.height) * 3);
+  PictureWork unused;
+  const std::size_t stride = static_cast<std::size_t>(raster.width) * 3;
+  for (int b = 0; b < bands.band_count(); ++b) {
+    bands.draw_band(b, raster.pixel(0, b * PictureBands::kRows), stride, work != nullptr ? *work : unused);
   }
   return std::nullopt;
 }

@@ -52,29 +52,35 @@ inline void inner_run(double lo, double hi, int x0, int x1, int& i0, int& i1) {
 // Draws into one band of rows at a time (set_band): every shape is drawn band by band, in paint
 // order within each band, so the pixels being blended stay in the cache (a 3000 px wide picture
 // has 9 kB rows; a shape drawn over the whole canvas at once touches a new cache line per row).
+// The band's rows may sit anywhere (the whole picture, or one band's scanlines of a PNG).
+// Threads: one Painter per thread; painters of different bands may run at once.
 class Painter {
  public:
-  Painter(RgbRaster& raster, double scale, PictureWork& work)
-      : raster_(raster), scale_(scale), work_(work), row_end_(raster.height) {}
+  Painter(int width, int height, double scale, PictureWork& work)
+      : width_(width), height_(height), scale_(scale), work_(work), row_end_(height) {}
 
-  void set_band(int row_begin, int row_end) {
+  // Rows [row_begin, row_end) of the picture, the first at `first_row`, `stride` bytes apart.
+  void set_band(int row_begin, int row_end, std::uint8_t* first_row, std::size_t stride) {
     row_begin_ = row_begin;
     row_end_ = row_end;
+    first_row_ = first_row;
+    stride_ = stride;
   }
   int row_begin() const { return row_begin_; }
   int row_end() const { return row_end_; }
   // The rows of the current band whose centres lie strictly inside (lo, hi).
   bool rows(double lo, double hi, int& first, int& last) const {
-    if (!pixel_span(lo, hi, raster_.height, first, last)) return false;
+    if (!pixel_span(lo, hi, height_, first, last)) return false;
     first = std::max(first, row_begin_);
     last = std::min(last, row_end_ - 1);
     return first <= last;
   }
-  int width() const { return raster_.width; }
-  int height() const { return raster_.height; }
+  int width() const { return width_; }
+  int height() const { return height_; }
   double scale() const { return scale_; }
   PictureWork& work() { return work_; }
-  std::uint8_t* row(int py) { return raster_.pixel(0, py); }
+  // Row `py` of the current band: 3 * width() bytes of RGB.
+  std::uint8_t* row(int py) { return first_row_ + static_cast<std::size_t>(py - row_begin_) * stride_; }
   // Working memory reused from one shape to the next.
   std::vector<double>& scratch() { return scratch_; }
 
@@ -92,11 +98,14 @@ class Painter {
   }
 
  private:
-  RgbRaster& raster_;
+  int width_;
+  int height_;
   double scale_;
   PictureWork& work_;
   int row_begin_ = 0;
   int row_end_;
+  std::uint8_t* first_row_ = nullptr;
+  std::size_t stride_ = 0;
   std::vector<double> scratch_;
 };
 

@@ -2,7 +2,9 @@
 // PNG images of a vibroimage (spec section 2): encoding a picture with the pHYs and `vibroimage`
 // iTXt chunks, and reading the XML back out of a PNG. libpng errors never escape: every failure
 // becomes a message.
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -23,8 +25,35 @@ struct EncodedPng {
 };
 
 // Encodes an RGB picture with a pHYs chunk of `pixels_per_metre` and an iTXt chunk `vibroimage`
-// holding `xml` (compressed).
+// holding `xml` (compressed). On one thread; encode_png_pieces() does the work.
 EncodedPng encode_png(const RgbRaster& raster, std::uint32_t pixels_per_metre, const std::string& xml);
+
+// What a PNG shows and holds, made on demand, so that the encoder can draw, write and compress the
+// parts on several threads at once (storage/png_encode.cpp).
+// Threads: draw_band runs on several threads at once, for different bands; xml runs once, on one
+// of them, while bands are drawn.
+struct PngSource {
+  int width_px = 0;
+  int height_px = 0;
+  std::uint32_t pixels_per_metre = 0;
+  int band_rows = 64;  // rows per band; band b holds rows [b * band_rows, (b + 1) * band_rows)
+  // Draws band `band`'s rows, 3 * width_px bytes of RGB each, the first at `first_row`, `stride`
+  // bytes apart.
+  std::function<void(int band, std::uint8_t* first_row, std::size_t stride)> draw_band;
+  // The text of the `vibroimage` iTXt chunk; more than kMaxImageFileBytes is an error.
+  std::function<std::string()> xml;
+};
+
+// A PNG file as pieces to be written one after the other (no copy into one block).
+struct PngPieces {
+  std::vector<std::string> pieces;
+  std::string error;  // empty on success
+  std::size_t size() const;
+};
+
+// Encodes `source` on `threads` threads (<= 0: one per core). The bytes are the same for any
+// number of threads.
+PngPieces encode_png_pieces(const PngSource& source, int threads);
 
 struct PngText {
   std::optional<std::string> xml;  // the `vibroimage` text; empty when the PNG has none

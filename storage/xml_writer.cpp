@@ -1,4 +1,6 @@
 // write_image_xml: the canonical XML text of an image (spec section 1 "Round trip", docs/format.md).
+#include <array>
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_set>
@@ -27,20 +29,40 @@ void append_escaped(std::string& out, std::string_view text, bool attribute) {
   }
 }
 
-std::string points_text(const std::vector<Point2Mm>& points) {
-  std::string text;
-  for (const auto& p : points) {
-    if (!text.empty()) text += ' ';
-    text += format_decimal(p.x_mm) + "," + format_decimal(p.y_mm);
+// The number parameters of one owner, in the table's (canonical) order.
+std::vector<const ParameterSpec*> number_specs_of(ParameterOwner owner) {
+  std::vector<const ParameterSpec*> specs;
+  for (const ParameterSpec& spec : parameter_table()) {
+    if (spec.owner == owner && spec.kind == ParameterKind::number) specs.push_back(&spec);
   }
-  return text;
+  return specs;
+}
+
+std::span<const ParameterSpec* const> number_specs(ParameterOwner owner) {
+  static const std::array<std::vector<const ParameterSpec*>, 5> by_owner = {
+      number_specs_of(ParameterOwner::canvas), number_specs_of(ParameterOwner::interaction),
+      number_specs_of(ParameterOwner::dot), number_specs_of(ParameterOwner::line),
+      number_specs_of(ParameterOwner::surface)};
+  switch (owner) {
+    case ParameterOwner::canvas: return by_owner[0];
+    case ParameterOwner::interaction: return by_owner[1];
+    case ParameterOwner::dot: return by_owner[2];
+    case ParameterOwner::line: return by_owner[3];
+    case ParameterOwner::surface: return by_owner[4];
+    default: break;
+  }
+  return {};
 }
 
 class Writer {
  public:
-  explicit Writer(const Image& image) : image_(image) { collect_ids(image.children); }
+  explicit Writer(const Image& image) : image_(image) {}
 
   std::string run() {
+    // Room for the whole text at once: growing an 18 MB string by doubling copies it and touches
+    // twice its pages, which cost more than writing it (docs/benchmarks.md). Untouched room costs
+    // nothing (the allocator maps large blocks lazily).
+    out_.reserve(4096 + size_estimate(image_.children));
     out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<vibroimage";
     attr("version", std::to_string(image_.version_major) + "." + std::to_string(image_.version_minor));
     numbers(ParameterOwner::canvas, [&](const ParameterSpec& spec) { return number_in(image_, spec); });
@@ -68,6 +90,20 @@ class Writer {
   }
 
  private:
+  // An upper estimate of the text of `elements` (numbers at most 24 characters each).
+  static std::size_t size_estimate(const std::vector<Element>& elements) {
+    std::size_t bytes = 0;
+    for (const Element& e : elements) {
+      bytes += 768 + e.id.size();
+      for (const auto& [name, value] : e.extra_attributes) bytes += name.size() + 6 * value.size() + 4;
+      for (const UnknownElement& u : e.unknown_children) bytes += u.xml.size() + 64;
+      if (const auto* s = std::get_if<Surface>(&e.body)) bytes += 50 * s->points.size();
+      if (const auto* g = std::get_if<Group>(&e.body)) bytes += size_estimate(g->children) + (g->name ? 6 * g->name->size() : 0);
+      if (const auto* u = std::get_if<UnknownElement>(&e.body)) bytes += u->xml.size();
+    }
+    return bytes;
+  }
+
   void collect_ids(const std::vector<Element>& elements) {
     for (const Element& e : elements) {
       if (!e.id.empty()) used_ids_.insert(e.id);
@@ -75,8 +111,13 @@ class Writer {
     }
   }
 
-  // A fresh id "<kind><n>" that no element of the document uses.
+  // A fresh id "<kind><n>" that no element of the document uses. The ids in use are collected
+  // the first time one is needed (a document read from a file has all its ids).
   std::string fresh_id(std::string_view kind) {
+    if (!ids_collected_) {
+      collect_ids(image_.children);
+      ids_collected_ = true;
+    }
     for (;;) {
       std::string id = std::string(kind) + std::to_string(++next_id_number_);
       if (used_ids_.insert(id).second) return id;
@@ -91,16 +132,34 @@ class Writer {
     append_escaped(out_, value, true);
     out_ += '"';
   }
-  void num(std::string_view name, double value) { attr(name, format_decimal(value)); }
+  // A number needs no escaping.
+  void num(std::string_view name, double value) {
+    out_ += ' ';
+    out_ += name;
+    out_ += "=\"";
+    append_decimal(out_, value);
+    out_ += '"';
+  }
 
   // Every number attribute of `owner` that `value_of` finds, in the parameter table's order (the
   // canonical order); the table has no defaults to leave out: a canonical file states every value.
   template <typename ValueOf>
   void numbers(ParameterOwner owner, ValueOf value_of) {
-    for (const ParameterSpec& spec : parameter_table()) {
-      if (spec.owner != owner || spec.kind != ParameterKind::number) continue;
-      if (const double* value = value_of(spec)) num(spec.name, *value);
+    for (const ParameterSpec* spec : number_specs(owner)) {
+      if (const double* value = value_of(*spec)) num(spec->name, *value);
     }
+  }
+  void points(std::string_view name, const std::vector<Point2Mm>& list) {
+    out_ += ' ';
+    out_ += name;
+    out_ += "=\"";
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (i > 0) out_ += ' ';
+      append_decimal(out_, list[i].x_mm);
+      out_ += ',';
+      append_decimal(out_, list[i].y_mm);
+    }
+    out_ += '"';
   }
   void extras(const ExtraAttributes& extra) {
     for (const auto& [name, value] : extra) attr(name, value);
@@ -211,7 +270,7 @@ class Writer {
       switch (spec.kind) {
         case ParameterKind::number: num(spec.name, *number_in(e, spec)); break;
         case ParameterKind::choice: attr(spec.name, spec.name == "shape" ? shape_name(s.shape) : pattern_name(s.pattern)); break;
-        case ParameterKind::points: attr(spec.name, points_text(s.points)); break;
+        case ParameterKind::points: points(spec.name, s.points); break;
         case ParameterKind::id:
         case ParameterKind::text:
         case ParameterKind::version: break;  // the id is written by open()
@@ -223,6 +282,7 @@ class Writer {
   const Image& image_;
   std::string out_;
   std::unordered_set<std::string> used_ids_;
+  bool ids_collected_ = false;
   int next_id_number_ = 0;
 };
 
