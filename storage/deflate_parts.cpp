@@ -21,7 +21,7 @@ constexpr std::size_t kMaxFeed = std::numeric_limits<uInt>::max() / 2;
 class RawDeflater {
  public:
   explicit RawDeflater(const DeflateSettings& settings) {
-    const int code = deflateInit2(&stream_, settings.level, Z_DEFLATED, -15, 8, settings.strategy);
+    const int code = deflateInit2(&stream_, settings.level, Z_DEFLATED, -15, settings.mem_level, settings.strategy);
     if (code != Z_OK) fail(code, "start compressing");
   }
   ~RawDeflater() { deflateEnd(&stream_); }

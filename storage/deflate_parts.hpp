@@ -20,6 +20,7 @@ namespace vimg {
 struct DeflateSettings {
   int level = 1;     // zlib's level, 0..9
   int strategy = 0;  // zlib's strategy (Z_DEFAULT_STRATEGY, Z_RLE, ...)
+  int mem_level = 8;  // zlib's memLevel, 1..9: 9 makes longer blocks (fewer Huffman tables to build)
 };
 
 struct DeflatedPart {
