@@ -47,7 +47,11 @@ LoadResult load_image_file(const std::filesystem::path& path) {
 
 std::optional<std::string> save_image_file(const Image& image, const std::filesystem::path& path,
                                            const SaveOptions& options) {
-  if (!has_png_extension(path)) return write_file_atomically(path, write_image_xml(image));
+  if (!has_png_extension(path)) {
+    const std::string xml = write_image_xml(image);
+    if (auto error = saved_text_size_error(xml.size())) return path.string() + ": " + *error;
+    return write_file_atomically(path, xml);
+  }
   // The picture is drawn and compressed band by band while the XML is written, on every core;
   // the pieces go to the file in order, never copied into one block.
   const PictureBands bands(image, options.scale_px_per_mm);

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "storage/deflate_parts.hpp"
+#include "storage/image_io.hpp"
 #include "storage/limits.hpp"
 #include "storage/parallel_tasks.hpp"
 #include "storage/png_codec.hpp"
@@ -151,9 +152,8 @@ class Encoder {
       ~Release() { latch.count_down(); }
     } release{text_ready_};
     text_ = source_.xml();
-    if (text_.size() > kMaxImageFileBytes) {
-      text_error_ = "the XML text of this image is " + std::to_string(text_.size()) +
-                    " bytes, more than a reader accepts (limit " + std::to_string(kMaxImageFileBytes) + ")";
+    if (auto error = saved_text_size_error(text_.size())) {
+      text_error_ = std::move(*error);
       return;
     }
     text_part_bytes_ = std::max(kMinTextPartBytes, (text_.size() + kMaxTextParts - 1) / kMaxTextParts);

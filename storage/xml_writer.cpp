@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "storage/image_io.hpp"
+#include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 #include "storage/parameter_table.hpp"
 
@@ -289,5 +290,11 @@ class Writer {
 }  // namespace
 
 std::string write_image_xml(const Image& image) { return Writer(image).run(); }
+
+std::optional<std::string> saved_text_size_error(std::size_t bytes) {
+  if (bytes <= kMaxImageFileBytes) return std::nullopt;
+  return "the XML text of this image is " + std::to_string(bytes) + " bytes, more than a reader accepts (limit " +
+         std::to_string(kMaxImageFileBytes) + ")";
+}
 
 }  // namespace vimg

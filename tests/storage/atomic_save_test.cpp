@@ -11,6 +11,7 @@
 
 #include "storage/atomic_file.hpp"
 #include "storage/image_io.hpp"
+#include "storage/limits.hpp"
 #include "storage_test_support.hpp"
 
 namespace vimg {
@@ -108,6 +109,24 @@ TEST(AtomicSave, FailureLeavesTheTargetUntouchedAndNoTemporaryFile) {
   const auto missing = write_file_atomically(dir / "no" / "such" / "dir.vimg", "x");
   ASSERT_TRUE(missing.has_value());
   EXPECT_NE(missing->find("dir.vimg"), std::string::npos);
+}
+
+TEST(AtomicSave, AnImageWhoseTextNoReaderAcceptsIsNotSaved) {
+  test::TempDir dir("too_long");
+  Image image = many_dots(3, 0.5);
+  image.meta = Meta{};
+  image.meta->description = std::string(kMaxImageFileBytes, 'a');  // the text around it passes the limit
+  for (const char* name : {"long.vimg", "long.png"}) {
+    SaveOptions options;
+    options.scale_px_per_mm = 1.0;
+    const auto error = save_image_file(image, dir / name, options);
+    ASSERT_TRUE(error.has_value()) << name;
+    EXPECT_NE(error->find(std::string(name) + ": the XML text of this image is"), std::string::npos) << *error;
+    EXPECT_NE(error->find("(limit " + std::to_string(kMaxImageFileBytes) + ")"), std::string::npos) << *error;
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path())) << name;
+  }
+  image.meta->description = std::string(1000, 'a');
+  EXPECT_FALSE(save_image_file(image, dir / "short.vimg").has_value());
 }
 
 TEST(AtomicSave, ReplacesAnExistingFileCompletely) {

@@ -61,8 +61,8 @@ std::vector<std::uint8_t> inflate_all(const std::string& stream, std::size_t exp
 
 TEST(DeflateParts, AnyCutsAndSettingsInflateToTheInput) {
   std::mt19937 rng(7);
-  const DeflateSettings settings[] = {{1, Z_RLE}, {1, Z_DEFAULT_STRATEGY}, {6, Z_DEFAULT_STRATEGY}, {9, Z_FILTERED},
-                                      {0, Z_DEFAULT_STRATEGY}};
+  const DeflateSettings settings[] = {{1, Z_HUFFMAN_ONLY, 9}, {1, Z_RLE, 8},        {1, Z_DEFAULT_STRATEGY, 8},
+                                      {6, Z_DEFAULT_STRATEGY, 9}, {9, Z_FILTERED, 1}, {0, Z_DEFAULT_STRATEGY, 8}};
   for (int trial = 0; trial < 60; ++trial) {
     const std::size_t size = std::uniform_int_distribution<std::size_t>(0, 300000)(rng);
     const auto raw = sample(rng, size, trial % 3);
@@ -70,7 +70,7 @@ TEST(DeflateParts, AnyCutsAndSettingsInflateToTheInput) {
     std::vector<std::size_t> cuts(std::uniform_int_distribution<std::size_t>(0, 9)(rng));
     for (std::size_t& cut : cuts) cut = std::uniform_int_distribution<std::size_t>(0, size)(rng);
     std::sort(cuts.begin(), cuts.end());
-    const DeflateSettings& s = settings[trial % 5];
+    const DeflateSettings& s = settings[trial % 6];
     const std::string stream = assemble(raw, cuts, s);
     int code = 0;
     const auto back = inflate_all(stream, size, code);
