@@ -3,7 +3,7 @@
 // the hostile inputs of docs/limits.md.
 //
 // Goals (Release build, the figures are read from these benchmarks, never checked in unit tests):
-//   BM_SavePng10PxPerMm                    <= 0.6 s  the picture of 100 000 primitives as PNG
+//   BM_SavePng10PxPerMm/threads:0          <= 0.6 s  the picture of 100 000 primitives as PNG (wall time)
 //   BM_ConvertPolygon100kPoints/circle     <= 2 s    XML text to PNG file, one 100 000-point polygon
 //   BM_ConvertPolygon100kPoints/zigzag     <= 2 s    the same, every edge spanning the canvas
 //   BM_ValidateElementWith200kAttributes   <= 2 s    2.3 MB, refused (limit 64 attributes)
