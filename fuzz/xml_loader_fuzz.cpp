@@ -1,15 +1,20 @@
 // Fuzzes the XML image loader: any bytes give diagnostics or an image, never a crash, leak or
 // undefined behaviour; every image that loads survives the canonical round trip; a document readable
-// with problems holds its values out of range where the problems say, and keeps them when written.
+// with problems holds its values out of range where the problems say, and keeps them when written;
+// and its PNG (a small picture) decodes to exactly the drawn picture and carries exactly its XML.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "storage/image_io.hpp"
 #include "fuzz/check_messages.hpp"
 #include "storage/limits.hpp"
+#include "storage/picture.hpp"
+#include "storage/png_codec.hpp"
 
 using vimg::fuzz::check_messages;
 
@@ -43,5 +48,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const vimg::LoadResult second = vimg::parse_image_xml(canonical, "canonical.vimg");
   if (!second.ok()) std::abort();                                     // the writer wrote an invalid file
   if (vimg::write_image_xml(*second.image) != canonical) std::abort();  // canonical form is stable
+
+  // The PNG encoder (one thread here), at a scale giving at most 40 pixels a side.
+  const double scale = 40.0 / std::max(first.image->width_mm, first.image->height_mm);
+  const vimg::PngPieces png = vimg::encode_image_png(*first.image, scale, 1);
+  if (!png.error.empty()) std::abort();
+  std::string bytes;
+  for (const std::string& piece : png.pieces) bytes += piece;
+  const vimg::PngText carried = vimg::read_png_text(bytes);
+  if (!carried.error.empty() || !carried.xml || *carried.xml != canonical) std::abort();
+  vimg::RgbRaster drawn;
+  if (vimg::draw_picture(*first.image, scale, drawn)) std::abort();
+  const vimg::DecodedPng decoded = vimg::decode_png_rgba(bytes, 1e4);
+  if (!decoded.error.empty() || decoded.width != drawn.width || decoded.height != drawn.height) std::abort();
+  for (std::size_t p = 0; p < drawn.rgb.size() / 3; ++p) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      if (decoded.rgba[p * 4 + c] != drawn.rgb[p * 3 + c]) std::abort();
+    }
+  }
   return 0;
 }

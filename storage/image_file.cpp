@@ -45,6 +45,26 @@ LoadResult load_image_file(const std::filesystem::path& path) {
   return parse_image_xml(*text.xml, name);
 }
 
+PngPieces encode_image_png(const Image& image, double scale_px_per_mm, int threads) {
+  const PictureBands bands(image, scale_px_per_mm);
+  if (bands.error()) {
+    PngPieces failed;
+    failed.error = *bands.error();
+    return failed;
+  }
+  PngSource source;
+  source.width_px = bands.size().width_px;
+  source.height_px = bands.size().height_px;
+  source.pixels_per_metre = static_cast<std::uint32_t>(std::lround(scale_px_per_mm * 1000.0));
+  source.band_rows = PictureBands::kRows;
+  source.draw_band = [&bands](int band, std::uint8_t* first_row, std::size_t stride) {
+    PictureWork work;
+    bands.draw_band(band, first_row, stride, work);
+  };
+  source.xml = [&image] { return write_image_xml(image); };
+  return encode_png_pieces(source, threads);
+}
+
 std::optional<std::string> save_image_file(const Image& image, const std::filesystem::path& path,
                                            const SaveOptions& options) {
   if (!has_png_extension(path)) {
@@ -52,21 +72,7 @@ std::optional<std::string> save_image_file(const Image& image, const std::filesy
     if (auto error = saved_text_size_error(xml.size())) return path.string() + ": " + *error;
     return write_file_atomically(path, xml);
   }
-  // The picture is drawn and compressed band by band while the XML is written, on every core;
-  // the pieces go to the file in order, never copied into one block.
-  const PictureBands bands(image, options.scale_px_per_mm);
-  if (bands.error()) return path.string() + ": " + *bands.error();
-  PngSource source;
-  source.width_px = bands.size().width_px;
-  source.height_px = bands.size().height_px;
-  source.pixels_per_metre = static_cast<std::uint32_t>(std::lround(options.scale_px_per_mm * 1000.0));
-  source.band_rows = PictureBands::kRows;
-  source.draw_band = [&bands](int band, std::uint8_t* first_row, std::size_t stride) {
-    PictureWork work;
-    bands.draw_band(band, first_row, stride, work);
-  };
-  source.xml = [&image] { return write_image_xml(image); };
-  const PngPieces png = encode_png_pieces(source, options.threads);
+  const PngPieces png = encode_image_png(image, options.scale_px_per_mm, options.threads);
   if (!png.error.empty()) return path.string() + ": " + png.error;
   AtomicFileWriter writer(path);
   for (const std::string& piece : png.pieces) writer.write(piece);

@@ -11,6 +11,7 @@
 #include "primitives/image.hpp"
 #include "storage/diagnostic.hpp"
 #include "storage/parameter_table.hpp"
+#include "storage/png_codec.hpp"
 
 namespace vimg {
 
@@ -55,6 +56,11 @@ struct SaveOptions {
   double scale_px_per_mm = 10.0;  // PNG only
   int threads = 0;                // PNG only: threads drawing and compressing; <= 0: one per core
 };
+
+// The PNG of an image (spec section 2) at `scale_px_per_mm`: the picture drawn and compressed band
+// by band while the XML is written, on `threads` threads (<= 0: one per core); the pieces are the
+// file in order. What save_image_file writes for a `.png`.
+PngPieces encode_image_png(const Image& image, double scale_px_per_mm, int threads);
 
 // Saves as XML or PNG, chosen by the extension (`.png`, anything else is XML). Atomic: the target
 // is either the old file or the complete new one. Returns an error message, or nothing on success.

@@ -4,7 +4,6 @@
 // Runs under TSan (label threaded).
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <filesystem>
 #include <random>
 #include <stdexcept>
@@ -26,19 +25,7 @@ std::string joined(const PngPieces& png) {
 }
 
 PngPieces encode_image(const Image& image, double scale, int threads) {
-  const PictureBands bands(image, scale);
-  EXPECT_FALSE(bands.error().has_value());
-  PngSource source;
-  source.width_px = bands.size().width_px;
-  source.height_px = bands.size().height_px;
-  source.pixels_per_metre = static_cast<std::uint32_t>(std::lround(scale * 1000.0));
-  source.band_rows = PictureBands::kRows;
-  source.draw_band = [&](int band, std::uint8_t* row, std::size_t stride) {
-    PictureWork work;
-    bands.draw_band(band, row, stride, work);
-  };
-  source.xml = [&] { return write_image_xml(image); };
-  return encode_png_pieces(source, threads);
+  return encode_image_png(image, scale, threads);
 }
 
 // The picture libpng decodes equals draw_picture's, pixel for pixel.
