@@ -1,7 +1,8 @@
 // `vimg convert` killed by SIGINT or SIGTERM while it writes its output: it exits 130/143 and
 // leaves no temporary (AtomicFileWriter's registry, emptied by the handler vimg's main installs)
 // and no output. The signal is sent the moment the temporary appears in the folder (inotify), so
-// it lands during the write and fsync of a large output.
+// it lands during the write and fsync of a large output. A PNG output is also interrupted while
+// its threads draw and compress, before any file exists.
 #include <gtest/gtest.h>
 #include <poll.h>
 #include <signal.h>
@@ -42,16 +43,26 @@ struct Outcome {
   int status = 0;
 };
 
-Outcome convert_and_signal(const fs::path& dir, int signal_number) {
+// Converts in.vimg to `out_name` and sends `signal_number` when the temporary of `out_name` appears,
+// or, with `after_ms` >= 0, that many milliseconds after the start (mid-encoding).
+Outcome convert_and_signal(const fs::path& dir, int signal_number, const std::string& out_name = "out.vimg",
+                           int after_ms = -1) {
   Outcome outcome;
   const int watch_fd = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
   EXPECT_GE(watch_fd, 0);
   inotify_add_watch(watch_fd, dir.c_str(), IN_CREATE);
   const pid_t pid = fork();
   if (pid == 0) {
-    const std::string in = (dir / "in.vimg").string(), out = (dir / "out.vimg").string();
+    const std::string in = (dir / "in.vimg").string(), out = (dir / out_name).string();
     execl(kVimg.c_str(), "vimg", "convert", in.c_str(), out.c_str(), static_cast<char*>(nullptr));
     _exit(127);
+  }
+  if (after_ms >= 0) {
+    usleep(static_cast<useconds_t>(after_ms) * 1000);
+    kill(pid, signal_number);
+    close(watch_fd);
+    waitpid(pid, &outcome.status, 0);
+    return outcome;
   }
   alignas(inotify_event) char buffer[4096];
   pollfd p{watch_fd, POLLIN, 0};
@@ -59,7 +70,7 @@ Outcome convert_and_signal(const fs::path& dir, int signal_number) {
     const ssize_t n = read(watch_fd, buffer, sizeof buffer);
     for (ssize_t off = 0; off < n;) {
       const auto* e = reinterpret_cast<const inotify_event*>(buffer + off);
-      if (e->len > 0 && std::string(e->name).starts_with(".out.vimg.tmp-")) {
+      if (e->len > 0 && std::string(e->name).starts_with("." + out_name + ".tmp-")) {
         kill(pid, signal_number);
         outcome.signalled_mid_write = true;
         break;
@@ -82,6 +93,26 @@ TEST(ConvertInterrupt, ASignalMidWriteLeavesNoTemporaryAndExits130Or143) {
     ASSERT_TRUE(o.signalled_mid_write) << "the temporary never appeared";
     ASSERT_TRUE(WIFEXITED(o.status)) << "signal " << signal_number << " killed vimg without its handler";
     EXPECT_EQ(WEXITSTATUS(o.status), code);
+    EXPECT_EQ(names_in(dir), std::vector<std::string>{"in.vimg"}) << "signal " << signal_number;
+  }
+}
+
+TEST(ConvertInterrupt, ASignalWhilePngThreadsWorkOrWriteLeavesNothingAndExits130Or143) {
+  const fs::path dir = fs::path(VIMG_BINARY_DIR) / "hostile_convert_interrupt_png";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_big_image(dir / "in.vimg");
+  for (const auto& [signal_number, code] : {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}}) {
+    // While the file is written: the temporary exists.
+    const Outcome writing = convert_and_signal(dir, signal_number, "out.png");
+    ASSERT_TRUE(writing.signalled_mid_write) << "the temporary never appeared";
+    ASSERT_TRUE(WIFEXITED(writing.status)) << "signal " << signal_number << " killed vimg without its handler";
+    EXPECT_EQ(WEXITSTATUS(writing.status), code);
+    EXPECT_EQ(names_in(dir), std::vector<std::string>{"in.vimg"}) << "signal " << signal_number;
+    // While reading, drawing and compressing (the whole convert takes about a second).
+    const Outcome encoding = convert_and_signal(dir, signal_number, "out.png", 400);
+    ASSERT_TRUE(WIFEXITED(encoding.status)) << "signal " << signal_number << " killed vimg without its handler";
+    EXPECT_EQ(WEXITSTATUS(encoding.status), code);
     EXPECT_EQ(names_in(dir), std::vector<std::string>{"in.vimg"}) << "signal " << signal_number;
   }
 }
