@@ -27,7 +27,7 @@ inline constexpr std::size_t kMaxImageFileBytes = 64 * kMiB / kLimitScale;  // i
 inline constexpr std::size_t kMaxSceneFileBytes = 4 * kMiB / kLimitScale;  // a volume scene (.vscene.xml)
 inline constexpr std::size_t kMaxCsvFileBytes = 64 * kMiB / kLimitScale;   // a gesture or probe-path CSV
 inline constexpr std::size_t kMaxNrrdHeaderBytes = 1 * kMiB / kLimitScale;  // the text header of a NRRD volume
-inline constexpr std::size_t kMaxNrrdFieldLineBytes = 1000;  // one `field: value` line of a NRRD header (teem overflows past ~1 KiB)
+inline constexpr std::size_t kMaxNrrdFieldLineBytes = 800;  // one `field: value` line of a NRRD header (teem's messages overflow from 963)
 inline constexpr std::size_t kMaxVolumeFileBytes = 1024 * kMiB;  // a whole NRRD file (header and data)
 
 // --- XML structure (images and volume scenes; checked before tinyxml2 builds its tree) --------------

@@ -132,6 +132,10 @@ std::optional<NrrdHeaderScan> scan_nrrd_header(std::string_view bytes, Diagnosti
       list.error(line_number, "the header holds a NUL byte");
       return std::nullopt;
     }
+    if (line.find('\r') != std::string_view::npos) {  // teem ends a line there: it would read other lines than these
+      list.error(line_number, "the header holds a carriage return inside a line (header lines end with a newline)");
+      return std::nullopt;
+    }
     if (line_number == 1) {
       if (line.size() != 8 || line.substr(0, 7) != "NRRD000" || line[7] < '1' || line[7] > '5') {
         list.error(1, "not a NRRD file: the first line must be NRRD0001 to NRRD0005");

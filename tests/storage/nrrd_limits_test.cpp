@@ -14,6 +14,7 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "storage/limits.hpp"
 #include "storage/volume/nrrd.hpp"
@@ -43,6 +44,30 @@ TEST(NrrdLimits, DeclaredDataOverTheByteLimitIsRefusedAtTheSizesLine) {
   const std::string text = "NRRD0004\ntype: double\ndimension: 3\nsizes: 512 512 512\nendian: little\nencoding: raw\n\nxyz";
   EXPECT_EQ(first_message(parse_nrrd(text, "d.nrrd")),
             "d.nrrd:4: error: the header declares 1073741824 bytes of data (limit 536870912)");
+}
+
+// teem copies a bad field's line into a fixed stack buffer for its message (a line of 963 bytes
+// overflowed it; found by the fuzzer). Every field, with bad values of the longest length allowed,
+// gives an error and returns; one byte more is refused before teem sees the line.
+TEST(NrrdLimits, EveryFieldLineUpToTheLimitFailsCleanlyAndLongerIsRefused) {
+  const std::vector<std::string> fields = {
+      "type", "dimension", "space", "space dimension", "sizes", "spacings", "thicknesses", "axis mins", "axis maxs",
+      "centers", "centerings", "kinds", "space directions", "space origin", "measurement frame", "encoding", "endian",
+      "byte skip", "line skip", "old min", "old max", "no such field"};
+  for (const std::string& field : fields) {
+    const bool has_type = field == "type", has_dimension = field == "dimension" || field == "type";
+    const std::string head = std::string("NRRD0004\n") + (has_type ? "" : "type: uchar\n") + (has_dimension ? "" : "dimension: 3\n") +
+                             (field.rfind("space", 0) == 0 ? "" : "space: RAS\n");
+    for (const char filler : {'x', '1', '('}) {
+      for (const std::size_t length : {kMaxNrrdFieldLineBytes, kMaxNrrdFieldLineBytes + 1}) {
+        const std::string line = field + ": " + std::string(length - field.size() - 2, filler);
+        const NrrdLoadResult r = parse_nrrd(head + line + "\nsizes: 1 1 1\nencoding: raw\n\n\x01", "f.nrrd");
+        EXPECT_FALSE(r.ok()) << line.substr(0, 40);
+        const bool refused = first_message(r).find("(limit " + std::to_string(kMaxNrrdFieldLineBytes) + ")") != std::string::npos;
+        EXPECT_EQ(refused, length > kMaxNrrdFieldLineBytes) << field << " '" << filler << "' " << length << ": " << first_message(r);
+      }
+    }
+  }
 }
 
 TEST(NrrdLimits, GzipDataLongerThanDeclaredIsRefused) {
