@@ -14,6 +14,7 @@
 #include "storage/read_file.hpp"
 #include "storage/png_codec.hpp"
 #include "storage/file_extension.hpp"
+#include "storage/foreign_file.hpp"
 
 namespace vimg {
 
@@ -34,6 +35,13 @@ LoadResult load_image_file(const std::filesystem::path& path) {
   FileReadResult read = read_regular_file(path, kMaxImageFileBytes);
   if (!read.bytes) return failure(name, read.error);
   const std::string& bytes = *read.bytes;
+  if (const std::optional<ForeignKind> foreign = foreign_file_kind(bytes)) {
+    LoadResult result;
+    result.diagnostics.push_back({Diagnostic::Severity::error, name, foreign->line,
+                                  "not an image: this is " + foreign->what +
+                                      "; an image is .vimg XML or a PNG that carries a 'vibroimage' chunk"});
+    return result;
+  }
   if (!looks_like_png(bytes)) return parse_image_xml(bytes, name);
 
   const PngText text = read_png_text(bytes);

@@ -211,6 +211,9 @@ TEST(ForeignFiles, CraftedFilesGetTheMessageThatNamesTheirProblem) {
       {"empty.vimg", 1, "the file is empty"},
       {"unclosed-root.vimg", 1, "not well-formed XML"},
       {"svg-not-a-vibroimage.svg", 1, "root element is <svg>, expected <vibroimage>"},
+      {"nrrd-volume.nrrd", 1, "nrrd-volume.nrrd:1: error: not an image: this is a NRRD volume"},
+      {"gesture-table.vimg", 1, "gesture-table.vimg:1: error: not an image: this is text that is not XML, starting with 'time_s,finger"},
+      {"json-after-blank-lines.vimg", 1, "json-after-blank-lines.vimg:3: error: not an image: this is JSON"},
   };
   std::size_t in_folder = 0;
   for (const auto& e : fs::directory_iterator(kData)) in_folder += e.is_regular_file() ? 1 : 0;

@@ -115,6 +115,11 @@ def main():
     write("nul-only.vimg", b"\0" * 4096)
     write("empty.vimg", b"")
     write("unclosed-root.vimg", text.replace(b"</vibroimage>\n", b""))
+    # Other kinds of file handed to the image tools by mistake.
+    write("nrrd-volume.nrrd",
+          b"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n" + bytes(range(8)))
+    write("gesture-table.vimg", b"time_s,finger,x_mm,y_mm,pressure,phase\n0,0,1,1,,down\n")
+    write("json-after-blank-lines.vimg", b"\n\n  {\"version\": 1}\n")
     write("svg-not-a-vibroimage.svg",
           b'<?xml version="1.0"?>\n<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><rect width="5" height="5"/></svg>\n')
 
