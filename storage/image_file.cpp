@@ -77,7 +77,7 @@ std::optional<std::string> save_image_file(const Image& image, const std::filesy
                                            const SaveOptions& options) {
   if (!has_png_extension(path)) {
     const std::string xml = write_image_xml(image);
-    if (auto error = saved_text_size_error(xml.size())) return path.string() + ": " + *error;
+    if (auto error = saved_text_error(xml)) return path.string() + ": " + *error;
     return write_file_atomically(path, xml);
   }
   const PngPieces png = encode_image_png(image, options.scale_px_per_mm, options.threads);

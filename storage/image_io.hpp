@@ -48,9 +48,10 @@ LoadResult load_image_file(const std::filesystem::path& path);
 // The canonical XML text (spec section 1, "Round trip"). Assigns ids to elements that lack one.
 std::string write_image_xml(const Image& image);
 
-// An error when an image's XML text of `bytes` is longer than any reader accepts
-// (kMaxImageFileBytes): such a text is never saved, as XML or inside a PNG.
-std::optional<std::string> saved_text_size_error(std::size_t bytes);
+// An error when an image's XML text is one no reader accepts: longer than kMaxImageFileBytes, or
+// holding a control character XML cannot represent (a name or text set by a program, not read
+// from a file). Such a text is never saved, as XML or inside a PNG.
+std::optional<std::string> saved_text_error(std::string_view xml);
 
 struct SaveOptions {
   double scale_px_per_mm = 10.0;  // PNG only

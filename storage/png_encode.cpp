@@ -152,7 +152,7 @@ class Encoder {
       ~Release() { latch.count_down(); }
     } release{text_ready_};
     text_ = source_.xml();
-    if (auto error = saved_text_size_error(text_.size())) {
+    if (auto error = saved_text_error(text_)) {
       text_error_ = std::move(*error);
       return;
     }

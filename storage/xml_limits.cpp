@@ -6,6 +6,7 @@
 
 #include "storage/diagnostic.hpp"
 #include "storage/limits.hpp"
+#include "storage/xml_characters.hpp"
 
 namespace vimg {
 
@@ -19,6 +20,7 @@ class Scanner {
     if (auto error = check_encoding()) return error;
     while (pos_ < xml_.size()) {
       const std::size_t lt = xml_.find('<', pos_);
+      if (check_references(pos_, lt == std::string_view::npos ? xml_.size() : lt)) return error_;
       if (lt == std::string_view::npos) break;
       advance_to(lt);
       const std::string_view rest = xml_.substr(pos_);
@@ -60,9 +62,13 @@ class Scanner {
     }
     const std::size_t nul = xml_.find('\0');
     if (nul != std::string_view::npos) {
-      const int line = 1 + static_cast<int>(std::count(xml_.begin(), xml_.begin() + static_cast<std::ptrdiff_t>(nul), '\n'));
-      return XmlLimitError{line, "a NUL byte at offset " + std::to_string(nul) +
+      return XmlLimitError{line_at(nul), "a NUL byte at offset " + std::to_string(nul) +
                                      " (XML text never holds one; is this UTF-16 or a binary file?)"};
+    }
+    const std::size_t control = find_forbidden_control_byte(xml_);
+    if (control != std::string_view::npos) {
+      return XmlLimitError{line_at(control), "a control character (byte " + hex_byte(static_cast<unsigned char>(xml_[control])) + ") at offset " +
+                                                 std::to_string(control) + ", which XML does not allow"};
     }
     const std::size_t end = xml_.starts_with("<?xml") ? xml_.find("?>") : std::string_view::npos;
     if (end != std::string_view::npos) {
@@ -82,6 +88,25 @@ class Scanner {
       }
     }
     return std::nullopt;
+  }
+
+  // The 1-based line of offset `at` (counted from the start: for errors only).
+  int line_at(std::size_t at) const {
+    return 1 + static_cast<int>(std::count(xml_.begin(), xml_.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+  }
+
+  // Every '&' in [from, to) must start a well-formed reference to an allowed character; true
+  // (with error_ set) when one does not.
+  bool check_references(std::size_t from, std::size_t to) {
+    const std::string_view segment = xml_.substr(from, to - from);  // searched alone: linear overall
+    for (std::size_t at = segment.find('&'); at != std::string_view::npos; at = segment.find('&', at + 1)) {
+      const std::size_t amp = from + at;
+      if (auto problem = reference_error(xml_.substr(amp, to - amp))) {
+        error_ = XmlLimitError{line_at(amp), std::move(*problem)};
+        return true;
+      }
+    }
+    return false;
   }
 
   // Moves to `to`, counting the newlines passed.
@@ -133,13 +158,19 @@ class Scanner {
       return true;
     }
     std::size_t attributes = 0;
-    char quote = 0;
     for (; i < xml_.size(); ++i) {
       const char c = xml_[i];
-      if (quote != 0) {
-        if (c == quote) quote = 0;
-      } else if (c == '"' || c == '\'') {
-        quote = c;
+      if (c == '"' || c == '\'') {
+        const std::size_t close = xml_.find(c, i + 1);
+        if (close == std::string_view::npos) return false;  // the value never ends: malformed
+        const std::size_t lt = xml_.substr(i + 1, close - i - 1).find('<');
+        if (lt != std::string_view::npos) {
+          error_ = XmlLimitError{line_at(i + 1 + lt), "a '<' inside the value of an attribute of <" + escape_input(name) +
+                                                          ">; write '&lt;' for the character itself"};
+          return true;
+        }
+        if (check_references(i + 1, close)) return true;
+        i = close;  // past the value
       } else if (c == '=') {
         if (++attributes_ > kMaxXmlAttributes) {
           error_ = XmlLimitError{line, "more than " + std::to_string(kMaxXmlAttributes) + " attributes in the file (limit " +

@@ -18,8 +18,10 @@ struct XmlLimitError {
 // Checks kMaxAttributesPerElement, kMaxXmlAttributes, kMaxXmlNestingDepth and kMaxXmlElements;
 // nothing when within. It also refuses, with a message naming it, what tinyxml2 would misreport:
 // text that is not UTF-8 (UTF-16/32, NUL bytes, another declared encoding) and a <!DOCTYPE>
-// (tinyxml2 ignores a DTD and leaves its entities unexpanded). Other malformed text is left to
-// the parser.
+// (tinyxml2 ignores a DTD and leaves its entities unexpanded), and what tinyxml2 accepts although
+// it is not well-formed XML (storage/xml_characters.hpp): control characters, references to
+// undefined entities or forbidden characters, a bare '&', '<' in an attribute value. Other
+// malformed text is left to the parser.
 std::optional<XmlLimitError> check_xml_limits(std::string_view xml);
 
 }  // namespace vimg

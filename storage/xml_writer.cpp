@@ -1,4 +1,5 @@
 // write_image_xml: the canonical XML text of an image (spec section 1 "Round trip", docs/format.md).
+#include <algorithm>
 #include <array>
 #include <span>
 #include <string>
@@ -10,6 +11,7 @@
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 #include "storage/parameter_table.hpp"
+#include "storage/xml_characters.hpp"
 
 namespace vimg {
 
@@ -291,10 +293,16 @@ class Writer {
 
 std::string write_image_xml(const Image& image) { return Writer(image).run(); }
 
-std::optional<std::string> saved_text_size_error(std::size_t bytes) {
-  if (bytes <= kMaxImageFileBytes) return std::nullopt;
-  return "the XML text of this image is " + std::to_string(bytes) + " bytes, more than a reader accepts (limit " +
-         std::to_string(kMaxImageFileBytes) + ")";
+std::optional<std::string> saved_text_error(std::string_view xml) {
+  if (xml.size() > kMaxImageFileBytes) {
+    return "the XML text of this image is " + std::to_string(xml.size()) + " bytes, more than a reader accepts (limit " +
+           std::to_string(kMaxImageFileBytes) + ")";
+  }
+  const std::size_t control = find_forbidden_control_byte(xml);
+  if (control == std::string_view::npos) return std::nullopt;
+  const int line = 1 + static_cast<int>(std::count(xml.begin(), xml.begin() + static_cast<std::ptrdiff_t>(control), '\n'));
+  return "line " + std::to_string(line) + " of the XML text of this image holds a control character (byte " +
+         hex_byte(static_cast<unsigned char>(xml[control])) + ") that XML cannot hold; remove it from the name or text";
 }
 
 }  // namespace vimg

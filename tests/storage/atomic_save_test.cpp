@@ -129,6 +129,23 @@ TEST(AtomicSave, AnImageWhoseTextNoReaderAcceptsIsNotSaved) {
   EXPECT_FALSE(save_image_file(image, dir / "short.vimg").has_value());
 }
 
+TEST(AtomicSave, AnImageWhoseTextHoldsAControlCharacterIsNotSaved) {
+  // XML cannot hold ESC, even as a reference: an id set by a program is refused at save, never
+  // written into a file that no reader accepts.
+  test::TempDir dir("control");
+  Image image = many_dots(3, 0.5);
+  image.children[1].id = "dot \x1b[31m";
+  for (const char* name : {"c.vimg", "c.png"}) {
+    SaveOptions options;
+    options.scale_px_per_mm = 1.0;
+    const auto error = save_image_file(image, dir / name, options);
+    ASSERT_TRUE(error.has_value()) << name;
+    EXPECT_NE(error->find(std::string(name) + ": line "), std::string::npos) << *error;
+    EXPECT_NE(error->find("holds a control character (byte 0x1B) that XML cannot hold"), std::string::npos) << *error;
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path())) << name;
+  }
+}
+
 TEST(AtomicSave, ReplacesAnExistingFileCompletely) {
   test::TempDir dir("atomic_replace");
   const auto target = dir / "f.vimg";

@@ -76,7 +76,7 @@ TEST(XmlLimits, MarkupInsideValuesCommentsAndCdataIsNotCounted) {
   // An unknown element (kept verbatim, so not bound by the unknown-attribute limit of primitives).
   std::string dot = "<mark x=\"1\" y='1' radius=\"1\"";
   for (std::size_t i = 3; i < kMaxAttributesPerElement; ++i) {
-    dot += " b" + std::to_string(i) + (i % 2 ? "=\"a=b /> <c d='e'>\"" : "='x=\"y\" > z'");
+    dot += " b" + std::to_string(i) + (i % 2 ? "=\"a=b /> &lt;c d='e'>\"" : "='x=\"y\" > z'");
   }
   dot += "/>\n";
   const std::string xml = "<?xml version=\"1.0\"?>\n<?pi a=b c=d?>\n" + kRoot + "<!-- <dot a=\"1\" b=\"2\"> = = = -->\n" + dot +
