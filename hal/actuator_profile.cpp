@@ -3,6 +3,7 @@
 #include "storage/diagnostic.hpp"
 #include "storage/read_file.hpp"
 #include "storage/xml_limits.hpp"
+#include "storage/xml_parse_problem.hpp"
 
 #include <tinyxml2.h>
 
@@ -70,7 +71,7 @@ class ProfileParser {
     }
     tinyxml2::XMLDocument document;
     if (document.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
-      error(document.ErrorLineNum(), std::string("XML: ") + document.ErrorStr());
+      error(document.ErrorLineNum(), xml_parse_problem(document.ErrorID()));
       return finish(std::nullopt);
     }
     const tinyxml2::XMLElement* root = document.RootElement();

@@ -49,8 +49,8 @@ LoadResult load_image_file(const std::filesystem::path& path);
 std::string write_image_xml(const Image& image);
 
 // An error when an image's XML text is one no reader accepts: longer than kMaxImageFileBytes, or
-// holding a control character XML cannot represent (a name or text set by a program, not read
-// from a file). Such a text is never saved, as XML or inside a PNG.
+// refused by check_xml_limits (more elements or attributes than a file may hold, a control
+// character a program put in a name). Such a text is never saved, as XML or inside a PNG.
 std::optional<std::string> saved_text_error(std::string_view xml);
 
 struct SaveOptions {

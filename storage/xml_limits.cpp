@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <string_view>
+#include <vector>
 
 #include "storage/diagnostic.hpp"
 #include "storage/limits.hpp"
@@ -20,29 +21,39 @@ class Scanner {
     if (auto error = check_encoding()) return error;
     while (pos_ < xml_.size()) {
       const std::size_t lt = xml_.find('<', pos_);
-      if (check_references(pos_, lt == std::string_view::npos ? xml_.size() : lt)) return error_;
+      if (check_text(pos_, lt == std::string_view::npos ? xml_.size() : lt)) return error_;
       if (lt == std::string_view::npos) break;
       advance_to(lt);
       const std::string_view rest = xml_.substr(pos_);
       if (rest.starts_with("<!--")) {
-        if (!markup(4, "-->")) break;
+        if (check_comment()) return error_;
+        if (!markup(4, "-->")) return error_;  // never closed: the parser says so
       } else if (rest.starts_with("<![CDATA[")) {
-        if (!markup(9, "]]>")) break;  // text, not counted by tinyxml2 as markup, but a node all the same
+        if (!markup(9, "]]>")) return error_;  // text, not counted by tinyxml2 as markup, but a node all the same
       } else if (rest.starts_with("<?")) {
-        if (!markup(2, "?>")) break;
+        if (late_declaration(rest)) {
+          return XmlLimitError{line_, "an XML declaration '<?xml ...?>' that is not at the very start of the file "
+                                      "(nothing, not even a blank, may come before it)"};
+        }
+        if (!markup(2, "?>")) return error_;
       } else if (rest.starts_with("<!DOCTYPE")) {
         // tinyxml2 skips a DTD without expanding its entities, so "&name;" would reach the
         // values as text and be reported as a bad value: say what is really there.
         return XmlLimitError{line_, "a <!DOCTYPE> declaration (a DTD, entities) is not allowed in this format"};
       } else if (rest.starts_with("<!")) {
-        if (!markup(2, ">")) break;
+        if (!markup(2, ">")) return error_;
       } else if (rest.starts_with("</")) {
-        --depth_;
-        if (!skip_past(2, ">")) break;
+        if (close_tag()) return error_;
+        if (!skip_past(2, ">")) return error_;
       } else if (!start_tag()) {
-        break;
+        return error_;
       }
       if (error_) return error_;
+    }
+    if (!open_.empty()) {
+      const OpenElement& last = open_.back();
+      return XmlLimitError{line_, "the file ends before <" + escape_input(last.name) + "> (opened at line " +
+                                      std::to_string(last.line) + ") is closed"};
     }
     return error_;
   }
@@ -95,6 +106,38 @@ class Scanner {
     return 1 + static_cast<int>(std::count(xml_.begin(), xml_.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
   }
 
+  // Character data in [from, to): no "]]>" (it ends only a CDATA section), and references as
+  // check_references; true (with error_ set) when it breaks either.
+  bool check_text(std::size_t from, std::size_t to) {
+    const std::size_t cdata_end = xml_.substr(from, to - from).find("]]>");
+    if (cdata_end != std::string_view::npos) {
+      error_ = XmlLimitError{line_at(from + cdata_end), "']]>' in text outside a CDATA section; write ']]&gt;'"};
+      return true;
+    }
+    return check_references(from, to);
+  }
+
+  // A comment at pos_ may not hold "--" nor end in "--->"; true (with error_ set) when it does.
+  bool check_comment() {
+    const std::size_t end = xml_.find("-->", pos_ + 4);
+    if (end == std::string_view::npos) return false;  // never closed: the parser says so
+    const std::size_t dashes = xml_.substr(pos_ + 4, end - pos_ - 4 + 1).find("--");
+    if (dashes == std::string_view::npos) return false;
+    error_ = XmlLimitError{line_at(pos_ + 4 + dashes), "'--' inside a comment (XML allows it only in the closing '-->')"};
+    return true;
+  }
+
+  // `rest` starts with "<?": true when it is an XML declaration anywhere but at the start of the
+  // file (after a UTF-8 byte order mark, if any).
+  bool late_declaration(std::string_view rest) const {
+    if (pos_ == 0 || (pos_ == 3 && xml_.starts_with("\xEF\xBB\xBF"))) return false;
+    if (rest.size() < 6) return false;
+    const auto lower = [](char c) { return static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c); };
+    const bool xml = lower(rest[2]) == 'x' && lower(rest[3]) == 'm' && lower(rest[4]) == 'l';
+    const char after = rest[5];
+    return xml && (after == ' ' || after == '\t' || after == '\n' || after == '\r' || after == '?');
+  }
+
   // Every '&' in [from, to) must start a well-formed reference to an allowed character; true
   // (with error_ set) when one does not.
   bool check_references(std::size_t from, std::size_t to) {
@@ -145,12 +188,40 @@ class Scanner {
            c == ':' || c == '.' || c == '-';
   }
 
+  // The length of the name at `from` (at least one byte, so that a message shows something).
+  std::size_t name_length(std::size_t from) const {
+    std::size_t end = from;
+    while (end < xml_.size() && name_char(xml_[end])) ++end;
+    return std::max<std::size_t>(end - from, 1);
+  }
+
+  // An end tag at pos_ must close the element open last; true (with error_ set) when it does not.
+  bool close_tag() {
+    std::size_t end = pos_ + 2;
+    while (end < xml_.size() && name_char(xml_[end])) ++end;
+    const std::string_view name = xml_.substr(pos_ + 2, end - pos_ - 2);
+    if (name.empty()) return false;  // malformed: the parser says so
+    if (open_.empty()) {
+      error_ = XmlLimitError{line_, "</" + escape_input(name) + "> closes no element (all are closed already)"};
+      return true;
+    }
+    if (open_.back().name != name) {
+      error_ = XmlLimitError{line_, "</" + escape_input(name) + "> does not close <" + escape_input(open_.back().name) +
+                                        "> (opened at line " + std::to_string(open_.back().line) + ")"};
+      return true;
+    }
+    open_.pop_back();
+    --depth_;
+    return false;
+  }
+
   // A start tag at pos_: counts it, checks the depth and its attributes, moves past its '>'.
   bool start_tag() {
     const int line = line_;
     std::size_t i = pos_ + 1;
     while (i < xml_.size() && name_char(xml_[i])) ++i;
     const std::string_view name = xml_.substr(pos_ + 1, i - pos_ - 1);
+    if (name.empty()) return false;  // "< x" or "<=": malformed, the parser says so
     if (!count_node(line)) return true;
     if (++depth_ > kMaxXmlNestingDepth) {
       error_ = XmlLimitError{line, "elements nested more than " + std::to_string(kMaxXmlNestingDepth) + " deep (limit " +
@@ -171,6 +242,12 @@ class Scanner {
         }
         if (check_references(i + 1, close)) return true;
         i = close;  // past the value
+        const char next = close + 1 < xml_.size() ? xml_[close + 1] : ' ';
+        if (next != ' ' && next != '\t' && next != '\n' && next != '\r' && next != '/' && next != '>') {
+          error_ = XmlLimitError{line_at(close), "no space between two attributes of <" + escape_input(name) +
+                                                     "> (before '" + escape_input(xml_.substr(close + 1, name_length(close + 1))) + "')"};
+          return true;
+        }
       } else if (c == '=') {
         if (++attributes_ > kMaxXmlAttributes) {
           error_ = XmlLimitError{line, "more than " + std::to_string(kMaxXmlAttributes) + " attributes in the file (limit " +
@@ -183,8 +260,14 @@ class Scanner {
                                            std::to_string(kMaxAttributesPerElement) + ")"};
           return true;
         }
+      } else if (c == '<') {
+        return false;  // the tag is not closed before the next one: the parser says so, at its line
       } else if (c == '>') {
-        if (xml_[i - 1] == '/') --depth_;  // <empty/>
+        if (xml_[i - 1] == '/') {
+          --depth_;  // <empty/>
+        } else {
+          open_.push_back({name, line});  // at most kMaxXmlNestingDepth deep: checked above
+        }
         advance_to(i + 1);
         return true;
       }
@@ -192,7 +275,13 @@ class Scanner {
     return false;  // the tag never ends: malformed, the parser says so
   }
 
+  struct OpenElement {
+    std::string_view name;
+    int line;
+  };
+
   std::string_view xml_;
+  std::vector<OpenElement> open_;  // the elements open at pos_, outermost first
   std::size_t pos_ = 0;
   int line_ = 1;
   int depth_ = 0;

@@ -9,6 +9,7 @@
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
 #include "storage/xml_limits.hpp"
+#include "storage/xml_parse_problem.hpp"
 #include "storage/xml_reader_detail.hpp"
 
 namespace vimg {
@@ -33,8 +34,7 @@ LoadResult Reader::run(std::string_view xml) {
   if (doc.ErrorID() == tinyxml2::XML_ERROR_EMPTY_DOCUMENT) {
     error(0, "the file is empty, expected a <vibroimage> document");
   } else if (doc.Error()) {
-    error(doc.ErrorLineNum(), std::string("not well-formed XML (") +
-                                  tinyxml2::XMLDocument::ErrorIDToName(doc.ErrorID()) + ")");
+    error(doc.ErrorLineNum(), xml_parse_problem(doc.ErrorID()));
   } else {
     const XMLElement* root = doc.RootElement();
     if (root == nullptr) {

@@ -1,5 +1,4 @@
 // write_image_xml: the canonical XML text of an image (spec section 1 "Round trip", docs/format.md).
-#include <algorithm>
 #include <array>
 #include <span>
 #include <string>
@@ -11,7 +10,7 @@
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 #include "storage/parameter_table.hpp"
-#include "storage/xml_characters.hpp"
+#include "storage/xml_limits.hpp"
 
 namespace vimg {
 
@@ -298,11 +297,11 @@ std::optional<std::string> saved_text_error(std::string_view xml) {
     return "the XML text of this image is " + std::to_string(xml.size()) + " bytes, more than a reader accepts (limit " +
            std::to_string(kMaxImageFileBytes) + ")";
   }
-  const std::size_t control = find_forbidden_control_byte(xml);
-  if (control == std::string_view::npos) return std::nullopt;
-  const int line = 1 + static_cast<int>(std::count(xml.begin(), xml.begin() + static_cast<std::ptrdiff_t>(control), '\n'));
-  return "line " + std::to_string(line) + " of the XML text of this image holds a control character (byte " +
-         hex_byte(static_cast<unsigned char>(xml[control])) + ") that XML cannot hold; remove it from the name or text";
+  if (const auto refused = check_xml_limits(xml)) {
+    return "the XML text of this image could not be opened again: line " + std::to_string(refused->line) + ": " +
+           refused->message;
+  }
+  return std::nullopt;
 }
 
 }  // namespace vimg

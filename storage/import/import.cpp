@@ -1,5 +1,6 @@
-// import_file: the format from the extension, the bytes through the one bounded reader, and a last
-// check that the result reads back as a valid image (what `vimg validate` will say of it).
+// import_file: the format from the extension, the bytes through the one bounded reader; and the last
+// check of every importer, that the result reads back as a valid image (what `vimg validate` will
+// say of it).
 #include "storage/import/import.hpp"
 
 #include <string>
@@ -12,22 +13,17 @@
 
 namespace vimg {
 
-namespace {
-
-// The image as it will be written, read back: its warnings (e.g. a primitive wholly outside the
-// canvas) join the import's; an error would be a fault of the importer and is reported as such.
-void check_written(ImportResult& r, const std::string& file) {
+void check_imported_image(ImportResult& r, const std::string& file) {
   if (!r.image) return;
   const LoadResult back = parse_image_xml(write_image_xml(*r.image), file + " (imported)");
   for (Diagnostic d : back.diagnostics) {
     d.file = file;
     d.line = 0;
+    if (d.severity == Diagnostic::Severity::error) d.message = "the imported image could not be opened again: " + d.message;
     r.diagnostics.push_back(std::move(d));
   }
   if (!back.ok()) r.image.reset();
 }
-
-}  // namespace
 
 ImportResult import_failure(const std::string& file, std::string message) {
   ImportResult r;
@@ -57,7 +53,6 @@ ImportResult import_file(const std::filesystem::path& path, const ImportOptions&
     }
     result = import_picture(*read.bytes, name, options);
   }
-  check_written(result, name);
   return result;
 }
 

@@ -41,8 +41,14 @@ ImportResult import_failure(const std::string& file, std::string message);
 // Reads the file (bounded by kMaxImageFileBytes) and imports it by its extension.
 ImportResult import_file(const std::filesystem::path& path, const ImportOptions& options);
 
-// The importers on text and bytes already read; `file_name` is for messages.
+// The importers on text and bytes already read; `file_name` is for messages. Each ends with
+// check_imported_image.
 ImportResult import_svg(std::string_view svg_text, const std::string& file_name, const ImportOptions& options);
 ImportResult import_picture(std::string_view png_bytes, const std::string& file_name, const ImportOptions& options);
+
+// The image as it will be written, read back: its warnings (a primitive wholly outside the canvas)
+// join the import's, and an error (say, more primitives or attributes than a reader accepts) drops
+// the image, so that an import never gives an image that cannot be saved and opened again.
+void check_imported_image(ImportResult& r, const std::string& file);
 
 }  // namespace vimg

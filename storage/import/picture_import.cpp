@@ -192,7 +192,9 @@ class PictureImporter {
 ImportResult import_picture(std::string_view png_bytes, const std::string& file_name, const ImportOptions& options) {
   PictureImporter importer(file_name, options);
   try {
-    return importer.run(png_bytes);
+    ImportResult result = importer.run(png_bytes);
+    check_imported_image(result, file_name);
+    return result;
   } catch (const std::bad_alloc&) {
     return import_failure(file_name, "out of memory importing the picture");
   }

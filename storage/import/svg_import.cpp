@@ -16,6 +16,7 @@
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 #include "storage/xml_limits.hpp"
+#include "storage/xml_parse_problem.hpp"
 
 namespace vimg {
 
@@ -77,8 +78,7 @@ class SvgImporter {
     tinyxml2::XMLDocument doc(true, tinyxml2::COLLAPSE_WHITESPACE);
     doc.Parse(text.data(), text.size());
     if (doc.Error()) {
-      diagnostics_.error(doc.ErrorLineNum(), std::string("not well-formed XML (") +
-                                                 tinyxml2::XMLDocument::ErrorIDToName(doc.ErrorID()) + ")");
+      diagnostics_.error(doc.ErrorLineNum(), xml_parse_problem(doc.ErrorID()));
       return finish();
     }
     const XMLElement* root = doc.RootElement();
@@ -250,7 +250,9 @@ class SvgImporter {
     svg::ShapeOutput shape = svg::convert_shape(g, settings);
     for (const std::string& w : shape.warnings) warn(e, w);
     if (!shape.error.empty()) return diagnostics_.error(e.GetLineNum(), shape.error);
-    if (shape.primitives.empty() || !take_budget(e, shape.primitives.size() + 1)) return;
+    // One primitive stands alone; several go into a group, which is an element too.
+    const std::size_t elements = shape.primitives.size() + (shape.primitives.size() > 1 ? 1 : 0);
+    if (shape.primitives.empty() || !take_budget(e, elements)) return;
     for (Element& p : shape.primitives) p.source_line = e.GetLineNum();
     if (shape.primitives.size() == 1) {
       shape.primitives.front().id = unique_id(e.Attribute("id"));
@@ -386,7 +388,9 @@ class SvgImporter {
 ImportResult import_svg(std::string_view svg_text, const std::string& file_name, const ImportOptions& options) {
   SvgImporter importer(file_name, options);
   try {
-    return importer.run(svg_text);
+    ImportResult result = importer.run(svg_text);
+    check_imported_image(result, file_name);
+    return result;
   } catch (const std::bad_alloc&) {
     return import_failure(file_name, "out of memory importing the drawing");
   }

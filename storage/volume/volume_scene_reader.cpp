@@ -9,6 +9,7 @@
 #include "storage/named_file.hpp"
 #include "storage/number_text.hpp"
 #include "storage/xml_limits.hpp"
+#include "storage/xml_parse_problem.hpp"
 #include "storage/volume/nrrd.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
@@ -29,7 +30,7 @@ class SceneReader {
     }
     tinyxml2::XMLDocument doc;
     if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
-      error(doc.ErrorLineNum(), std::string("malformed XML: ") + doc.ErrorName());
+      error(doc.ErrorLineNum(), xml_parse_problem(doc.ErrorID()));
       return finish();
     }
     const XMLElement* root = doc.RootElement();

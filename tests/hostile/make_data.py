@@ -115,6 +115,16 @@ def main():
     write("nul-only.vimg", b"\0" * 4096)
     write("empty.vimg", b"")
     write("unclosed-root.vimg", text.replace(b"</vibroimage>\n", b""))
+    # Not well-formed although tinyxml2 accepts it (XML conformance "not-wf" cases).
+    root = b'<vibroimage version="1.0" width="10" height="10">\n'
+    write("undefined-entity.vimg", root + b'<dot x="1" y="1" id="caf&eacute;"/>\n</vibroimage>\n')
+    write("bare-ampersand.vimg", root + b'<meta><title>Salt & pepper</title></meta>\n</vibroimage>\n')
+    write("escape-sequence.vimg", root + b'<dot x="1" y="1" id="\x1b[2Jgone"/>\n</vibroimage>\n')
+    write("reference-to-nul.vimg", root + b'<dot x="1" y="1" id="a&#0;b"/>\n</vibroimage>\n')
+    write("lt-in-attribute.vimg", root + b'<dot x="1" y="1" id="a<b"/>\n</vibroimage>\n')
+    write("dashes-in-comment.vimg", root + b'<!-- draft -- do not ship -->\n</vibroimage>\n')
+    write("declaration-not-first.vimg", b'\n<?xml version="1.0"?>\n' + root + b'</vibroimage>\n')
+    write("mismatched-tag.vimg", root + b'<group>\n<dot x="1" y="1"/>\n</grop>\n</vibroimage>\n')
     # Other kinds of file handed to the image tools by mistake.
     write("nrrd-volume.nrrd",
           b"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n" + bytes(range(8)))

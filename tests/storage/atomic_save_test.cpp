@@ -140,10 +140,28 @@ TEST(AtomicSave, AnImageWhoseTextHoldsAControlCharacterIsNotSaved) {
     options.scale_px_per_mm = 1.0;
     const auto error = save_image_file(image, dir / name, options);
     ASSERT_TRUE(error.has_value()) << name;
-    EXPECT_NE(error->find(std::string(name) + ": line "), std::string::npos) << *error;
-    EXPECT_NE(error->find("holds a control character (byte 0x1B) that XML cannot hold"), std::string::npos) << *error;
+    EXPECT_NE(error->find(std::string(name) + ": the XML text of this image could not be opened again: line "),
+              std::string::npos)
+        << *error;
+    EXPECT_NE(error->find("a control character (byte 0x1B) at offset"), std::string::npos) << *error;
     EXPECT_TRUE(std::filesystem::is_empty(dir.path())) << name;
   }
+}
+
+TEST(AtomicSave, AnImageWithMoreElementsThanAReaderAcceptsIsNotSaved) {
+  test::TempDir dir("elements");
+  // With the XML declaration and the root, one node more than a reader accepts.
+  Image image = many_dots(static_cast<int>(kMaxXmlElements) - 1, 0.5);
+  for (const char* name : {"e.vimg", "e.png"}) {
+    SaveOptions options;
+    options.scale_px_per_mm = 0.1;
+    const auto error = save_image_file(image, dir / name, options);
+    ASSERT_TRUE(error.has_value()) << name;
+    EXPECT_NE(error->find("(limit " + std::to_string(kMaxXmlElements) + ")"), std::string::npos) << *error;
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path())) << name;
+  }
+  image.children.pop_back();
+  EXPECT_FALSE(save_image_file(image, dir / "fits.vimg").has_value());
 }
 
 TEST(AtomicSave, ReplacesAnExistingFileCompletely) {

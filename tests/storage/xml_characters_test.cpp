@@ -99,6 +99,49 @@ TEST(XmlCharacters, EachIsRefusedAtItsLineBeforeParsing) {
   }
 }
 
+TEST(XmlCharacters, OtherTextTinyxml2AcceptsButXmlForbidsIsRefusedAtItsLine) {
+  const struct {
+    std::string line3;
+    std::string error;
+  } cases[] = {
+      {"<!-- a -- b -->", "c.vimg:3: error: '--' inside a comment (XML allows it only in the closing '-->')"},
+      {"<!-- a --->", "c.vimg:3: error: '--' inside a comment (XML allows it only in the closing '-->')"},
+      {"<meta>a ]]> b</meta>", "c.vimg:3: error: ']]>' in text outside a CDATA section; write ']]&gt;'"},
+      {"<dot x=\"1\"y=\"1\"/>", "c.vimg:3: error: no space between two attributes of <dot> (before 'y')"},
+      {"<?xml version=\"1.0\"?>",
+       "c.vimg:3: error: an XML declaration '<?xml ...?>' that is not at the very start of the file (nothing, not even "
+       "a blank, may come before it)"},
+  };
+  for (const auto& c : cases) {
+    const LoadResult r = parse_image_xml(with_third_line(c.line3), "c.vimg");
+    ASSERT_FALSE(r.ok()) << c.line3;
+    EXPECT_EQ(first_error(r), c.error);
+  }
+  const LoadResult stray = parse_image_xml(with_third_line("</dot>"), "c.vimg");
+  EXPECT_EQ(first_error(stray), "c.vimg:3: error: </dot> does not close <vibroimage> (opened at line 1)");
+  const LoadResult after = parse_image_xml(kRoot + "</vibroimage>\n\n</vibroimage>\n", "c.vimg");
+  EXPECT_EQ(first_error(after), "c.vimg:4: error: </vibroimage> closes no element (all are closed already)");
+  const LoadResult cut = parse_image_xml(kRoot + "<group>\n<dot x=\"1\" y=\"1\"/>\n", "c.vimg");
+  EXPECT_EQ(first_error(cut), "c.vimg:3: error: the file ends before <group> (opened at line 2) is closed");
+  const LoadResult late = parse_image_xml(" <?xml version=\"1.0\"?>\n" + kRoot + "</vibroimage>\n", "late.vimg");
+  EXPECT_EQ(first_error(late), "late.vimg:1: error: an XML declaration '<?xml ...?>' that is not at the very start of the "
+                               "file (nothing, not even a blank, may come before it)");
+}
+
+TEST(XmlCharacters, WhatXmlAllowsNearThoseStillLoads) {
+  const std::string xml = "\xEF\xBB\xBF<?xml version=\"1.0\"?>\n<?xml-stylesheet href=\"a\"?>\n" + kRoot +
+                          "<!-- a - b -->\n<meta>a ]] > b ]]&gt;</meta>\n<note><![CDATA[ -- ]] ]]></note>\n"
+                          "<dot x=\"1\"\ty='1'\ny=\"1\" name=\"]]>\"/>\n<dot x=\"1\" y=\"1\"/>\n</vibroimage>\n";
+  const LoadResult r = parse_image_xml(xml, "ok.vimg");
+  EXPECT_EQ(first_error(r), "ok.vimg:8: error: not well-formed XML: a malformed attribute (a name without '=' and a quoted "
+                            "value, or a name used twice in one element) (XML_ERROR_PARSING_ATTRIBUTE)")
+      << "tinyxml2 finds the duplicate";
+  std::string fixed = xml;
+  fixed.replace(fixed.find("\ny=\"1\""), 6, "\nid=\"a\"");
+  const LoadResult ok = parse_image_xml(fixed, "ok.vimg");
+  EXPECT_TRUE(ok.ok()) << first_error(ok);
+}
+
 TEST(XmlCharacters, ReferencesInCommentsCdataAndInstructionsAreNotReferences) {
   const std::string xml = "<?xml version=\"1.0\"?>\n<?pi a & b?>\n" + kRoot + "<!-- a & b &nbsp; \x7F -->\n" +
                           "<note><![CDATA[ Tom & Jerry &#0; ]]></note>\n"

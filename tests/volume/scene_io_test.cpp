@@ -57,7 +57,7 @@ TEST(VolumeSceneXml, ErrorsNameFileAndLine) {
        "x.xml:5: error: stiffness exceeds the device's maxStiffness"},
       {data + "<scalarData id=\"s\" file=\"t.nrrd\"/>", "x.xml:4: error: duplicate data id 's' (first on line 2)"},
       {data + "<hologram/>", "x.xml:4: error: unknown element <hologram>"},
-      {data + "<device", "x.xml:4: error: malformed XML"},
+      {data + "<device", "x.xml:4: error: not well-formed XML: a tag that is not closed"},
   };
   for (const auto& c : cases) {
     const std::string xml = "<volumeScene version=\"1.0\">\n" + c.body + "\n</volumeScene>\n";
