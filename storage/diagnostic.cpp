@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 
 namespace vimg {
 
@@ -162,23 +163,53 @@ void DiagnosticList::add(Diagnostic::Severity severity, int line, std::string_vi
   find_worst();
 }
 
+namespace {
+
+// "FILE: error: N more diagnostics not shown: E errors, W warnings (limit L per file)".
+Diagnostic not_shown_line(const std::string& file, std::size_t errors, std::size_t warnings, std::size_t limit) {
+  const auto counted = [](std::size_t n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
+  std::string parts;
+  if (errors > 0) parts = counted(errors, "error");
+  if (warnings > 0) parts += (parts.empty() ? "" : ", ") + counted(warnings, "warning");
+  const std::size_t dropped = errors + warnings;
+  Diagnostic line{errors > 0 ? Diagnostic::Severity::error : Diagnostic::Severity::warning, file, 0,
+                  std::to_string(dropped) + " more " + (dropped == 1 ? "diagnostic" : "diagnostics") + " not shown: " +
+                      parts + " (limit " + std::to_string(limit) + " per file)"};
+  line.not_shown_errors = errors;
+  line.not_shown_warnings = warnings;
+  return line;
+}
+
+}  // namespace
+
+std::vector<Diagnostic> merge_diagnostics(std::vector<Diagnostic> first, std::vector<Diagnostic> second,
+                                          const std::string& file, std::size_t limit) {
+  std::vector<Diagnostic> shown;
+  std::size_t errors = 0, warnings = 0;
+  for (std::vector<Diagnostic>* list : {&first, &second}) {
+    for (Diagnostic& d : *list) {
+      errors += d.not_shown_errors;
+      warnings += d.not_shown_warnings;
+      if (d.not_shown_errors + d.not_shown_warnings == 0) shown.push_back(std::move(d));
+    }
+  }
+  while (shown.size() > limit) {  // the last warning goes first; errors say why a file failed
+    auto last = std::find_if(shown.rbegin(), shown.rend(),
+                             [](const Diagnostic& d) { return d.severity == Diagnostic::Severity::warning; });
+    if (last == shown.rend()) last = shown.rbegin();
+    ++(last->severity == Diagnostic::Severity::error ? errors : warnings);
+    shown.erase(std::next(last).base());
+  }
+  if (errors + warnings > 0) shown.push_back(not_shown_line(file, errors, warnings, limit));
+  return shown;
+}
+
 std::vector<Diagnostic> DiagnosticList::take() {
   std::sort(kept_.begin(), kept_.end(), [this](const Entry& a, const Entry& b) { return before(a, b); });
   std::vector<Diagnostic> out;
   out.reserve(kept_.size() + 1);
   for (Entry& e : kept_) out.push_back(std::move(e.diagnostic));
-  const std::size_t dropped = dropped_errors_ + dropped_warnings_;
-  if (dropped > 0) {
-    const auto counted = [](std::size_t n, const char* what) {
-      return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
-    };
-    std::string parts;
-    if (dropped_errors_ > 0) parts = counted(dropped_errors_, "error");
-    if (dropped_warnings_ > 0) parts += (parts.empty() ? "" : ", ") + counted(dropped_warnings_, "warning");
-    out.push_back({dropped_errors_ > 0 ? Diagnostic::Severity::error : Diagnostic::Severity::warning, file_, 0,
-                   std::to_string(dropped) + " more " + (dropped == 1 ? "diagnostic" : "diagnostics") +
-                       " not shown: " + parts + " (limit " + std::to_string(limit_) + " per file)"});
-  }
+  if (dropped_errors_ + dropped_warnings_ > 0) out.push_back(not_shown_line(file_, dropped_errors_, dropped_warnings_, limit_));
   kept_.clear();
   worst_ = 0;
   dropped_errors_ = dropped_warnings_ = 0;

@@ -17,6 +17,9 @@ struct Diagnostic {
   std::string file;   // as the user named it
   int line = 0;       // 1-based; 0 when the problem is not tied to a line (e.g. I/O errors)
   std::string message;
+  // On the line that counts what a DiagnosticList did not keep (take()), the diagnostics not shown.
+  std::size_t not_shown_errors = 0;
+  std::size_t not_shown_warnings = 0;
 
   // "FILE:LINE: error: message" (spec section 4); "FILE: error: message" when line is 0. The file
   // name and the message are passed through printable_message(), whoever built them.
@@ -24,6 +27,13 @@ struct Diagnostic {
 };
 
 bool has_errors(const std::vector<Diagnostic>& diagnostics);
+
+// The diagnostics of one file from two passes (say an import, then its result read back), within
+// the same bound as one DiagnosticList: `first` then `second`, and when more than `limit`, the last
+// warnings and then the last errors are left out and counted on one summary line with those the
+// two lists had already counted.
+std::vector<Diagnostic> merge_diagnostics(std::vector<Diagnostic> first, std::vector<Diagnostic> second,
+                                          const std::string& file, std::size_t limit = kMaxDiagnosticsPerFile);
 
 // Input shown in a message: ASCII controls (0-31, 127), C1 controls (U+0080-U+009F), bidirectional
 // overrides and bytes that are not UTF-8 become \xNN, a backslash becomes \\, valid UTF-8 text stays.

@@ -45,8 +45,8 @@ inline void inner_run(double lo, double hi, int x0, int x1, int& i0, int& i1) {
   if (!(lo <= hi)) return;
   const double f = std::ceil(lo - 0.5), l = std::floor(hi - 0.5);
   if (!(f <= l) || l < x0 || f > x1) return;
-  i0 = std::max(x0, static_cast<int>(f));
-  i1 = std::min(x1, static_cast<int>(l));
+  i0 = static_cast<int>(std::max(f, static_cast<double>(x0)));  // clamped before the cast: f and l may be
+  i1 = static_cast<int>(std::min(l, static_cast<double>(x1)));  // far outside int (a dot of radius 1e77)
 }
 
 // Draws into one band of rows at a time (set_band): every shape is drawn band by band, in paint

@@ -15,13 +15,15 @@ namespace vimg {
 
 void check_imported_image(ImportResult& r, const std::string& file) {
   if (!r.image) return;
-  const LoadResult back = parse_image_xml(write_image_xml(*r.image), file + " (imported)");
-  for (Diagnostic d : back.diagnostics) {
+  LoadResult back = parse_image_xml(write_image_xml(*r.image), file + " (imported)");
+  for (Diagnostic& d : back.diagnostics) {
     d.file = file;
     d.line = 0;
-    if (d.severity == Diagnostic::Severity::error) d.message = "the imported image could not be opened again: " + d.message;
-    r.diagnostics.push_back(std::move(d));
+    if (d.severity == Diagnostic::Severity::error && d.not_shown_errors == 0) {
+      d.message = printable_message("the imported image could not be opened again: " + d.message);
+    }
   }
+  r.diagnostics = merge_diagnostics(std::move(r.diagnostics), std::move(back.diagnostics), file);
   if (!back.ok()) r.image.reset();
 }
 

@@ -120,6 +120,28 @@ TEST(HostileMessages, ImageReportsTheFirstFiftyDiagnosticsAndCountsTheRest) {
             "many.vimg: error: 100 more diagnostics not shown: 80 errors, 20 warnings (limit 50 per file)");
 }
 
+TEST(HostileMessages, TwoPassesTogetherKeepTheBoundAndShowErrorsBeforeWarnings) {
+  // An import's 57 warnings (50 kept, 7 counted), then a read-back with one error and 55
+  // warnings (the error and 49 kept, 6 counted): 102 lines in all become 50 and one summary.
+  DiagnosticList import("a.svg");
+  for (int i = 0; i < 57; ++i) import.warning(i + 1, "import warning " + std::to_string(i));
+  DiagnosticList back("a.svg");
+  back.error(0, "too many attributes");
+  for (int i = 0; i < 55; ++i) back.warning(0, "outside " + std::to_string(i));
+  std::vector<Diagnostic> first = import.take(), second = back.take();
+  ASSERT_EQ(first.size(), 51u);
+  ASSERT_EQ(second.size(), 51u);
+  const std::vector<Diagnostic> merged = merge_diagnostics(first, second, "a.svg");
+  ASSERT_EQ(merged.size(), kMaxDiagnosticsPerFile + 1);
+  check_all(merged);
+  EXPECT_EQ(merged[0].message, "import warning 0");
+  EXPECT_EQ(merged[48].message, "import warning 48");
+  EXPECT_EQ(merged[49].message, "too many attributes") << "the error stays; the last warnings go";
+  // 7 + 6 counted before, and now the 49 read-back warnings and the import's 50th.
+  EXPECT_EQ(merged.back().to_string(), "a.svg: warning: 63 more diagnostics not shown: 63 warnings (limit 50 per file)");
+  EXPECT_EQ(merge_diagnostics(first, {}, "a.svg").back().to_string(), first.back().to_string()) << "a list alone stays as it was";
+}
+
 TEST(HostileMessages, OnlyWarningsDroppedGiveAWarningSummary) {
   std::string xml = "<vibroimage version=\"1.0\" width=\"10\" height=\"10\">\n";
   for (int i = 0; i < 60; ++i) xml += "<dot x=\"1\" y=\"1\" extra=\"1\"/>\n";

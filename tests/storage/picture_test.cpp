@@ -11,6 +11,7 @@
 
 #include "storage/palette.hpp"
 #include "storage/picture.hpp"
+#include "storage/picture_painter.hpp"
 
 namespace vimg {
 namespace {
@@ -165,10 +166,25 @@ TEST(Picture, HugeFiniteCoordinatesNeitherOverflowNorHang) {
   Element d;
   d.body = Dot{1e308, -1e308, 1e308, 1.0};
   image.children.push_back(d);
+  d.body = Dot{10, 10, 1e77, 1.0};  // its inner run spans 1e78 px each way (found by the XML fuzzer)
+  image.children.push_back(d);
   PictureWork work;
   const RgbRaster r = draw(image, 10.0, &work);
   EXPECT_GT(ink(r, 100, 100), 0);
   EXPECT_LE(work.edge_steps, 20u * 200u);
+  EXPECT_LE(work.pixels, image.children.size() * 200u * 200u) << "each shape draws at most the canvas";
+}
+
+TEST(Picture, AnInnerRunFarOutsideTheRowIsClampedToIt) {
+  int i0 = 0, i1 = 0;
+  picture_detail::inner_run(-1.7e78, 1.7e78, 3, 99, i0, i1);
+  EXPECT_EQ(i0, 3);
+  EXPECT_EQ(i1, 99);
+  picture_detail::inner_run(-1e300, 50.2, 3, 99, i0, i1);
+  EXPECT_EQ(i0, 3);
+  EXPECT_EQ(i1, 49);
+  picture_detail::inner_run(1e300, 2e300, 3, 99, i0, i1);
+  EXPECT_GT(i0, i1) << "none";
 }
 
 // One look (docs/format.md, storage/palette.hpp): a surface's stripes run vertically on every
