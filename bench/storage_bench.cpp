@@ -22,6 +22,7 @@
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
 #include "storage/picture.hpp"
+#include "storage/xml_limits.hpp"
 
 namespace {
 
@@ -104,6 +105,16 @@ void BM_Tinyxml2BareParse(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text().size()));
 }
 BENCHMARK(BM_Tinyxml2BareParse)->Unit(benchmark::kMillisecond);
+
+// The linear pass before tinyxml2 (storage/xml_limits.hpp): structure limits and the
+// well-formedness tinyxml2 lacks. Every load runs it, and every save on the text it writes.
+void BM_CheckXmlStructure(benchmark::State& state) {
+  for (auto _ : state) {
+    if (vimg::check_xml_limits(text())) state.SkipWithError("the benchmark image was refused");
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text().size()));
+}
+BENCHMARK(BM_CheckXmlStructure)->Unit(benchmark::kMillisecond);
 
 void BM_LoadAndValidate(benchmark::State& state) {
   for (auto _ : state) {
