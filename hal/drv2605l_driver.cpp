@@ -8,17 +8,13 @@
 #include "hal/device_error.hpp"
 #include "hal/drv2605l_registers.hpp"
 #include "hal/rest_on_exit.hpp"
+#include "storage/diagnostic.hpp"
 
 namespace vimg {
 
 using namespace drv2605l;
 
 namespace {
-std::string hex_byte(unsigned value) {
-  static constexpr char kDigits[] = "0123456789ABCDEF";
-  return std::string("0x") + kDigits[(value >> 4) & 0xF] + kDigits[value & 0xF];
-}
-
 // A throwing transfer as an errno value, for the retry loop of initialization and calibration.
 template <typename Transfer>
 int error_of(Transfer&& transfer) {

@@ -47,11 +47,12 @@ bool hidden_control(std::uint32_t cp) {
          cp == 0x200E || cp == 0x200F || cp == 0x061C;
 }
 
+constexpr char kHexDigits[] = "0123456789ABCDEF";
+
 void append_hex(std::string& out, unsigned char b) {
-  static constexpr char kHex[] = "0123456789ABCDEF";
   out += "\\x";
-  out += kHex[b >> 4];
-  out += kHex[b & 15];
+  out += kHexDigits[b >> 4];
+  out += kHexDigits[b & 15];
 }
 
 // Escapes `text` into at most `max_bytes`, then "..." when input is left over (and `cut` is set).
@@ -119,6 +120,8 @@ std::string Diagnostic::to_string() const {
   text += printable_message(message);
   return text;
 }
+
+std::string hex_byte(unsigned char byte) { return std::string("0x") + kHexDigits[byte >> 4] + kHexDigits[byte & 15]; }
 
 bool has_errors(const std::vector<Diagnostic>& diagnostics) {
   return std::any_of(diagnostics.begin(), diagnostics.end(),

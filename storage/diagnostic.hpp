@@ -40,6 +40,9 @@ std::vector<Diagnostic> merge_diagnostics(std::vector<Diagnostic> first, std::ve
 // The result is cut after at most `max_bytes` and then ends in "...".
 std::string escape_input(std::string_view text, std::size_t max_bytes = kMaxQuotedInputBytes);
 
+// A byte as messages name it: "0x1B" (a control character, a register, a bus address).
+std::string hex_byte(unsigned char byte);
+
 // A whole message made safe to print: escaped like escape_input() except that backslashes stay as
 // they are (so an escaped message is unchanged), at most kMaxMessageBytes long ("..." at a cut).
 std::string printable_message(std::string_view text);

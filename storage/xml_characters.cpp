@@ -16,11 +16,6 @@ std::size_t find_forbidden_control_byte(std::string_view text) {
   return std::string_view::npos;
 }
 
-std::string hex_byte(unsigned char byte) {
-  constexpr char kDigits[] = "0123456789ABCDEF";
-  return std::string("0x") + kDigits[byte >> 4] + kDigits[byte & 0xF];
-}
-
 namespace {
 
 bool is_xml_char(std::uint32_t c) {

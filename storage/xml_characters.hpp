@@ -14,9 +14,6 @@ namespace vimg {
 // return; NUL is reported on its own before this), or npos.
 std::size_t find_forbidden_control_byte(std::string_view text);
 
-// A byte as messages name it: "0x1B".
-std::string hex_byte(unsigned char byte);
-
 // `text` starts with '&': what is wrong with the reference there, or nothing when it is one of
 // the five predefined entities or a reference to a character XML allows.
 std::optional<std::string> reference_error(std::string_view text);

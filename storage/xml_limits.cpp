@@ -188,18 +188,16 @@ class Scanner {
            c == ':' || c == '.' || c == '-';
   }
 
-  // The length of the name at `from` (at least one byte, so that a message shows something).
-  std::size_t name_length(std::size_t from) const {
+  // The name starting at `from` (empty when none does).
+  std::string_view name_at(std::size_t from) const {
     std::size_t end = from;
     while (end < xml_.size() && name_char(xml_[end])) ++end;
-    return std::max<std::size_t>(end - from, 1);
+    return xml_.substr(from, end - from);
   }
 
   // An end tag at pos_ must close the element open last; true (with error_ set) when it does not.
   bool close_tag() {
-    std::size_t end = pos_ + 2;
-    while (end < xml_.size() && name_char(xml_[end])) ++end;
-    const std::string_view name = xml_.substr(pos_ + 2, end - pos_ - 2);
+    const std::string_view name = name_at(pos_ + 2);
     if (name.empty()) return false;  // malformed: the parser says so
     if (open_.empty()) {
       error_ = XmlLimitError{line_, "</" + escape_input(name) + "> closes no element (all are closed already)"};
@@ -211,19 +209,17 @@ class Scanner {
       return true;
     }
     open_.pop_back();
-    --depth_;
     return false;
   }
 
   // A start tag at pos_: counts it, checks the depth and its attributes, moves past its '>'.
   bool start_tag() {
     const int line = line_;
-    std::size_t i = pos_ + 1;
-    while (i < xml_.size() && name_char(xml_[i])) ++i;
-    const std::string_view name = xml_.substr(pos_ + 1, i - pos_ - 1);
+    const std::string_view name = name_at(pos_ + 1);
     if (name.empty()) return false;  // "< x" or "<=": malformed, the parser says so
+    std::size_t i = pos_ + 1 + name.size();
     if (!count_node(line)) return true;
-    if (++depth_ > kMaxXmlNestingDepth) {
+    if (open_.size() + 1 > static_cast<std::size_t>(kMaxXmlNestingDepth)) {  // this element inside all that are open
       error_ = XmlLimitError{line, "elements nested more than " + std::to_string(kMaxXmlNestingDepth) + " deep (limit " +
                                        std::to_string(kMaxXmlNestingDepth) + ")"};
       return true;
@@ -244,8 +240,9 @@ class Scanner {
         i = close;  // past the value
         const char next = close + 1 < xml_.size() ? xml_[close + 1] : ' ';
         if (next != ' ' && next != '\t' && next != '\n' && next != '\r' && next != '/' && next != '>') {
+          const std::string_view next_name = name_at(close + 1);
           error_ = XmlLimitError{line_at(close), "no space between two attributes of <" + escape_input(name) +
-                                                     "> (before '" + escape_input(xml_.substr(close + 1, name_length(close + 1))) + "')"};
+                                                     "> (before '" + escape_input(next_name.empty() ? xml_.substr(close + 1, 1) : next_name) + "')"};
           return true;
         }
       } else if (c == '=') {
@@ -263,11 +260,7 @@ class Scanner {
       } else if (c == '<') {
         return false;  // the tag is not closed before the next one: the parser says so, at its line
       } else if (c == '>') {
-        if (xml_[i - 1] == '/') {
-          --depth_;  // <empty/>
-        } else {
-          open_.push_back({name, line});  // at most kMaxXmlNestingDepth deep: checked above
-        }
+        if (xml_[i - 1] != '/') open_.push_back({name, line});  // not <empty/>; kMaxXmlNestingDepth at most: checked above
         advance_to(i + 1);
         return true;
       }
@@ -284,7 +277,6 @@ class Scanner {
   std::vector<OpenElement> open_;  // the elements open at pos_, outermost first
   std::size_t pos_ = 0;
   int line_ = 1;
-  int depth_ = 0;
   std::size_t nodes_ = 0;
   std::size_t attributes_ = 0;  // in the whole file
   std::optional<XmlLimitError> error_;
