@@ -11,6 +11,7 @@ packages=(
   clang libclang-rt-14-dev
   xvfb xdotool imagemagick xauth python3
   locales
+  libboost-math-dev python3-numpy python3-scipy
 )
 
 missing=()
