@@ -38,6 +38,13 @@ function(vimg_test_dir name dir)
   if(ARG_SERIAL)
     set(serial TRUE)
   endif()
+  # The TSan stage of .ci/run builds only these (target vimg_threaded_tests) and runs label threaded.
+  if(ARG_LABELS STREQUAL "threaded")
+    if(NOT TARGET vimg_threaded_tests)
+      add_custom_target(vimg_threaded_tests)
+    endif()
+    add_dependencies(vimg_threaded_tests ${name})
+  endif()
   gtest_discover_tests(${name} DISCOVERY_MODE PRE_TEST DISCOVERY_TIMEOUT 60
     PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT 300 RUN_SERIAL ${serial})
 endfunction()
