@@ -118,6 +118,11 @@ void JsonWriter::integer(long long value) {
   out_ += std::to_string(value);
 }
 
+void JsonWriter::null() {
+  before_value();
+  out_ += "null";
+}
+
 void JsonWriter::number_text(std::string_view json_number) {
   before_value();
   out_.append(json_number);

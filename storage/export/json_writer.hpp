@@ -21,6 +21,8 @@ class JsonWriter {
   // A finite number (a non-finite one is written as 0: JSON has no NaN or infinity).
   void number(double value);
   void integer(long long value);
+  // JSON's null (a value that is undefined, e.g. a statistic of too few data).
+  void null();
   // A number written exactly as given (e.g. "1.0" where a format's samples write it so); the text
   // must be a JSON number.
   void number_text(std::string_view json_number);
