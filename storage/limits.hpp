@@ -70,10 +70,26 @@ inline constexpr double kMaxProbeCoordinateMm = 10'000.0;  // |x_mm|, |y_mm|, |z
 inline constexpr std::size_t kMaxProbeRenderRows =
     static_cast<std::size_t>(kMaxProbePathDurationS * kMaxDeviceRateHz) + 1;
 
+// --- Rendered signals compared by `vimg compare` (study/compare_signal.cpp, docs/studies.md) ----------
+inline constexpr std::size_t kMaxSignalFileBytes = 64 * kMiB / kLimitScale;  // a WAV or render CSV given as input
+inline constexpr double kMaxSignalDurationS = 610.0;  // a render: the longest gesture and its longest ring-down
+inline constexpr std::size_t kMaxCompareInputs = 32;  // inputs of one comparison (each analysed render is held in memory)
+
 // --- Import (storage/import, docs/import.md) --------------------------------------------------------
 inline constexpr int kMaxPictureLevels = 16;                // grey levels of a picture import
 inline constexpr double kMaxImportCoordinateMm = 1e9;       // |coordinate| of an SVG shape after its transforms
 inline constexpr double kMaxPictureContainmentTests = 4e8;  // outline edges visited placing a picture's holes
+
+// --- Studies (storage/study: study files and trial files; docs/limits.md "Studies") ----------------
+inline constexpr std::size_t kMaxStudyFileBytes = 1 * kMiB / kLimitScale;  // a matching or location study file
+inline constexpr std::size_t kMaxStudySets = 64;           // image sets of a matching study
+inline constexpr std::size_t kMaxStudyImagesPerSet = 64;   // images of one set (the answer screen shows them all)
+inline constexpr int kMaxStudyRepetitions = 100;           // presentations of each image per set
+inline constexpr double kMaxStudyTrainingMinutes = 600.0;  // training time per set
+inline constexpr std::size_t kMaxStudyTrials = 10'000;     // trials of one participant in one study
+inline constexpr std::size_t kMaxStudyNameBytes = 255;     // a set's name, an image's stem (a file name's length)
+inline constexpr std::size_t kMaxTrialFileBytes = 64 * kMiB / kLimitScale;  // a trial file (CSV)
+inline constexpr std::size_t kMaxTrialRows = 1'000'000 / kLimitScale;      // rows of a trial file
 
 // --- Messages ----------------------------------------------------------------------------------------
 inline constexpr std::size_t kMaxQuotedInputBytes = 64;  // input quoted in a message, before "..."
