@@ -15,7 +15,7 @@
 namespace vimg {
 
 struct ChoiceModel {
-  double tau = 0.1;                 // distance scale, > 0
+  double tau = 0.1;                 // distance scale; one not > 0 counts as 0.1
   double likely_confused_p = 0.2;   // threshold for the warning
 };
 

@@ -39,6 +39,8 @@ struct StSimFeatures {
   std::size_t blocks = 0;                // signal.size() / 512, rounded down
   std::vector<double> spectral_support;  // blocks * 512, block after block
   std::vector<double> normalized;        // blocks * 512, block after block
+  std::vector<double> support_energy;    // per block: sum of spectral_support^2 (its term as reference)
+  std::vector<double> normalized_energy; // per block: sum of normalized^2
 };
 
 // signal_8khz: samples at kStSimSampleRateHz (any length; fewer than 512 samples give no blocks).
@@ -53,7 +55,8 @@ struct StSimScore {
 // ST-SIM of `distorted` against `reference`, as the reference implementation computes it. A
 // distorted signal longer than the reference is cut to the reference's length first. No value
 // (where the reference raises an error) when the distorted signal is shorter than the reference,
-// or when the signals differ and the reference is shorter than one block. eta in (0, 1).
+// or when the signals differ and the reference is shorter than one block, or when eta is not
+// inside (0, 1).
 std::optional<StSimScore> stsim(const StSimFeatures& distorted, const StSimFeatures& reference,
                                 double eta = kStSimEta);
 

@@ -1,0 +1,83 @@
+#include "primitives/perception/block_dct.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+
+namespace vimg::detail {
+
+namespace {
+
+constexpr std::size_t kN = kStSimBlockSamples;
+constexpr int kLog2N = 9;
+static_assert(std::size_t{1} << kLog2N == kN);
+
+struct Tables {
+  std::array<double, kN / 2> twiddle_re{};  // exp(-2 pi i j / N)
+  std::array<double, kN / 2> twiddle_im{};
+  std::array<double, kN> post_re{};          // 2 scale_k exp(-i pi k / (2N))
+  std::array<double, kN> post_im{};
+  std::array<std::size_t, kN> bit_reversed{};
+};
+
+Tables make_tables() {
+  Tables t;
+  const double n = static_cast<double>(kN);
+  for (std::size_t j = 0; j < kN / 2; ++j) {
+    const double angle = -2.0 * std::numbers::pi * static_cast<double>(j) / n;
+    t.twiddle_re[j] = std::cos(angle);
+    t.twiddle_im[j] = std::sin(angle);
+  }
+  for (std::size_t k = 0; k < kN; ++k) {
+    const double scale = 2.0 * (k == 0 ? std::sqrt(1.0 / (4.0 * n)) : std::sqrt(1.0 / (2.0 * n)));
+    const double angle = -std::numbers::pi * static_cast<double>(k) / (2.0 * n);
+    t.post_re[k] = scale * std::cos(angle);
+    t.post_im[k] = scale * std::sin(angle);
+    std::size_t r = 0;
+    for (int b = 0; b < kLog2N; ++b) r |= ((k >> b) & 1u) << (kLog2N - 1 - b);
+    t.bit_reversed[k] = r;
+  }
+  return t;
+}
+
+const Tables& tables() {
+  static const Tables t = make_tables();
+  return t;
+}
+
+}  // namespace
+
+void orthonormal_dct_512(std::span<const double, kStSimBlockSamples> block,
+                         std::span<double, kStSimBlockSamples> coefficients) {
+  const Tables& t = tables();
+  // Makhoul's reordering: even samples forward, odd samples backward, placed bit-reversed.
+  std::array<double, kN> re{};
+  std::array<double, kN> im{};
+  for (std::size_t n = 0; n < kN / 2; ++n) {
+    re[t.bit_reversed[n]] = block[2 * n];
+    re[t.bit_reversed[kN - 1 - n]] = block[2 * n + 1];
+  }
+  // Iterative radix-2 decimation-in-time FFT.
+  for (std::size_t size = 2; size <= kN; size *= 2) {
+    const std::size_t half = size / 2;
+    const std::size_t stride = kN / size;
+    for (std::size_t start = 0; start < kN; start += size) {
+      for (std::size_t j = 0; j < half; ++j) {
+        const double wr = t.twiddle_re[j * stride];
+        const double wi = t.twiddle_im[j * stride];
+        const std::size_t a = start + j;
+        const std::size_t b = a + half;
+        const double xr = re[b] * wr - im[b] * wi;
+        const double xi = re[b] * wi + im[b] * wr;
+        re[b] = re[a] - xr;
+        im[b] = im[a] - xi;
+        re[a] += xr;
+        im[a] += xi;
+      }
+    }
+  }
+  for (std::size_t k = 0; k < kN; ++k) coefficients[k] = re[k] * t.post_re[k] - im[k] * t.post_im[k];
+}
+
+}  // namespace vimg::detail
