@@ -1,4 +1,5 @@
-// vimg-player: plays a vibrotactile image under the finger (or mouse) through a chosen output.
+// vimg-player: plays a vibrotactile image under the finger (or mouse) through a chosen output, or
+// runs the matching test of a study file (--study, study_session.hpp).
 #include <SDL.h>
 
 #include <cstdio>
@@ -9,8 +10,10 @@
 
 #include "apps/vimg-player/image_view.hpp"
 #include "apps/vimg-player/player_args.hpp"
+#include "apps/vimg-player/player_setup.hpp"
 #include "apps/vimg-player/status_overlay.hpp"
 #include "apps/vimg-player/status_text.hpp"
+#include "apps/vimg-player/study_session.hpp"
 #include "apps/vimg-player/touch_input.hpp"
 #include "hal/actuator_profile.hpp"
 #include "hal/output_spec.hpp"
@@ -25,26 +28,6 @@ namespace vimg::player_app {
 
 namespace {
 
-double display_px_per_mm(int display, bool& from_dpi) {
-  float dpi_diagonal = 0, dpi_horizontal = 0, dpi_vertical = 0;
-  if (SDL_GetDisplayDPI(display, &dpi_diagonal, &dpi_horizontal, &dpi_vertical) == 0 && dpi_horizontal > 10.0f) {
-    from_dpi = true;
-    return static_cast<double>(dpi_horizontal) / 25.4;
-  }
-  from_dpi = false;
-  return 96.0 / 25.4;  // the conventional desktop DPI when the display does not say
-}
-
-struct SdlSession {
-  SDL_Window* window = nullptr;
-  SDL_Renderer* renderer = nullptr;
-  ~SdlSession() {
-    if (renderer != nullptr) SDL_DestroyRenderer(renderer);
-    if (window != nullptr) SDL_DestroyWindow(window);
-    SDL_QuitSubSystem(SDL_INIT_VIDEO);
-  }
-};
-
 int calibrate(const ActuatorProfile& profile, const OutputSpec& spec) {
   SignalRestScope signals;
   try {
@@ -58,19 +41,8 @@ int calibrate(const ActuatorProfile& profile, const OutputSpec& spec) {
   }
 }
 
-ActuatorProfile load_profile_or_ideal(const PlayerArgs& args, bool& ok) {
-  ok = true;
-  ActuatorProfile profile;  // ideal, 175 Hz
-  if (args.actuator_path) {
-    const auto result = load_actuator_profile(*args.actuator_path);
-    for (const auto& error : result.errors) std::fprintf(stderr, "%s\n", error.c_str());
-    ok = result.profile.has_value();
-    if (ok) profile = *result.profile;
-  }
-  return profile;
-}
-
 int run(const PlayerArgs& args) {
+  if (args.study_path) return run_study(args);
   if (args.calibrate) {
     bool ok = false;
     const ActuatorProfile profile = load_profile_or_ideal(args, ok);
@@ -110,29 +82,13 @@ int run(const PlayerArgs& args) {
   scene_options.carrier_frequency_hz = profile.resonance_hz;
   auto scene = compile_scene(image, scene_options);
 
-  if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
-    std::fprintf(stderr, "vimg-player: cannot start video: %s\n", SDL_GetError());
+  PlayerWindow sdl;
+  if (auto error = open_player_window(args, "vimg-player", sdl)) {
+    std::fprintf(stderr, "vimg-player: %s\n", error->c_str());
     return 1;
   }
-  SdlSession sdl;
-  const Uint32 flags = args.window_size ? SDL_WINDOW_SHOWN : (SDL_WINDOW_SHOWN | SDL_WINDOW_FULLSCREEN_DESKTOP);
-  const auto [width, height] = args.window_size.value_or(std::pair{1024, 768});
-  sdl.window = SDL_CreateWindow("vimg-player", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height, flags);
-  if (sdl.window == nullptr) {
-    std::fprintf(stderr, "vimg-player: cannot open a window (%s): %s\n", SDL_GetCurrentVideoDriver(), SDL_GetError());
-    return 1;
-  }
-  sdl.renderer = SDL_CreateRenderer(sdl.window, -1, SDL_RENDERER_PRESENTVSYNC);
-  if (sdl.renderer == nullptr) sdl.renderer = SDL_CreateRenderer(sdl.window, -1, SDL_RENDERER_SOFTWARE);
-  if (sdl.renderer == nullptr) {
-    std::fprintf(stderr, "vimg-player: cannot draw: %s\n", SDL_GetError());
-    return 1;
-  }
-
-  bool scale_from_dpi = false;
-  const double px_per_mm = args.px_per_mm.value_or(display_px_per_mm(SDL_GetWindowDisplayIndex(sdl.window), scale_from_dpi));
-  int window_width = 0, window_height = 0;
-  SDL_GetRendererOutputSize(sdl.renderer, &window_width, &window_height);
+  const double px_per_mm = sdl.px_per_mm;
+  const int window_width = sdl.width_px, window_height = sdl.height_px;
   ViewTransform view;
   view.px_per_mm = px_per_mm;
   view.origin_x_px = (window_width - image.width_mm * px_per_mm) / 2.0;
@@ -156,8 +112,7 @@ int run(const PlayerArgs& args) {
     return 1;
   }
 
-  StatusText status(output->description(),
-                    args.px_per_mm ? "--px-per-mm" : (scale_from_dpi ? "display dpi" : "96 dpi assumed"), px_per_mm);
+  StatusText status(output->description(), sdl.scale_source, px_per_mm);
   auto report_messages = [&] {
     for (auto& message : output->take_messages()) {
       std::fprintf(stderr, "vimg-player: %s\n", message.c_str());

@@ -4,6 +4,8 @@
 #include <cstdio>
 
 #include "cmdline/command_line.hpp"
+#include "storage/diagnostic.hpp"
+#include "storage/study/trial_log.hpp"
 
 namespace vimg::player_app {
 namespace {
@@ -50,10 +52,44 @@ ArgsResult parse_player_args(const std::vector<std::string>& arguments) {
                  "limit; without it the thread runs normally)")
       ->check(CLI::Range(0, 99));
   app.add_flag("--calibrate", a.calibrate, "run the actuator's calibration (DRV2605L auto-calibration), store it, exit");
+  std::string study, responses, gesture;
+  auto* study_option = app.add_option("--study", study,
+                                      "run the matching test of this study file (docs/player.md, \"Matching test\") "
+                                      "instead of playing an image");
+  auto* participant = app.add_option("--participant", a.participant,
+                                     "the participant's ID ([A-Za-z0-9_-], 1 to 64); names the trial file")
+                          ->needs(study_option);
+  auto* results = app.add_option("--results", a.results_dir, "folder of the trial files, DIR/ID.trials.csv")
+                      ->needs(study_option);
+  app.add_flag("--restart", a.restart,
+               "begin a finished participant again; the old trial file is kept aside, never overwritten")
+      ->needs(study_option);
+  auto* responses_option =
+      app.add_option("--responses", responses,
+                     "scripted run without a person: CSV 'trial,chosen' answering every trial (image by file stem)")
+          ->needs(study_option);
+  auto* gesture_option =
+      app.add_option("--gesture", gesture, "scripted run: the gesture file rubbed in every trial")->needs(study_option);
+  responses_option->needs(gesture_option);
+  gesture_option->needs(responses_option);
   if (const auto code = cmdline::parse(app, arguments)) return {std::nullopt, *code};
-  if (a.image_path.empty() && !a.calibrate) {
-    std::fprintf(stderr, "vimg-player: error: IMAGE is required (or --calibrate)\nRun 'vimg-player --help' for usage.\n");
-    return {std::nullopt, cmdline::kExitUsage};
+  auto usage_error = [](const std::string& problem) {
+    std::fprintf(stderr, "vimg-player: error: %s\nRun 'vimg-player --help' for usage.\n", problem.c_str());
+    return ArgsResult{std::nullopt, cmdline::kExitUsage};
+  };
+  if (study_option->count() > 0) {
+    if (study.empty()) return usage_error("--study needs a study file");
+    if (!a.image_path.empty() || a.calibrate) return usage_error("--study runs a study: give no IMAGE and no --calibrate");
+    if (participant->count() == 0 || results->count() == 0) return usage_error("--study needs --participant and --results");
+    if (!valid_participant_id(a.participant)) {
+      return usage_error("--participant '" + escape_input(a.participant) + "': an ID is 1 to 64 letters, digits, '_' or '-'");
+    }
+    if (a.results_dir.empty()) return usage_error("--results needs a folder");
+    a.study_path = study;
+    if (!responses.empty()) a.responses_path = responses;
+    if (!gesture.empty()) a.gesture_path = gesture;
+  } else if (a.image_path.empty() && !a.calibrate) {
+    return usage_error("IMAGE is required (or --calibrate, or --study)");
   }
   if (!actuator.empty()) a.actuator_path = actuator;
   if (scale->count() > 0) a.px_per_mm = px_per_mm;

@@ -18,6 +18,14 @@ struct PlayerArgs {
   bool calibrate = false;
   bool equalize = false;       // equalize the drive for the actuator (ActuatorChain, --equalize)
   int realtime_priority = 80;  // SCHED_FIFO for the render thread: steady latency on a busy device
+  // The matching test (docs/player.md, "Matching test"): --study instead of IMAGE.
+  std::optional<std::string> study_path;
+  std::string participant;  // [A-Za-z0-9_-]{1,64}
+  std::string results_dir;
+  bool restart = false;
+  // Scripted run (no person): both or neither.
+  std::optional<std::string> responses_path;
+  std::optional<std::string> gesture_path;
 };
 
 struct ArgsResult {

@@ -1,0 +1,154 @@
+// The scripted matching test as a process (docs/player.md, "Matching test"): every trial of the
+// plan recorded once with the scripted choice, a finished participant refused, --restart keeping
+// the old file aside, bad responses and a missing masking-noise device refused.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include "tests/player_study/study_process.hpp"
+
+namespace vimg::study_test {
+namespace {
+
+class PlayerStudy : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = fs::path(VIMG_BINARY_DIR) / "test_output" / "player_study" /
+            ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(root_);
+    fs::create_directories(root_ / "results");
+  }
+  std::vector<std::string> study_args(const fs::path& study, const std::string& participant,
+                                      std::vector<std::string> more = {}) const {
+    std::vector<std::string> args{"--study", study.string(), "--participant", participant, "--results",
+                                  (root_ / "results").string(), "--window", "800x600", "--px-per-mm", "3"};
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+  }
+  std::vector<std::string> scripted(const fs::path& study, const std::string& participant, const std::string& wav) const {
+    return study_args(study, participant,
+                      {"--responses", (root_ / "R.csv").string(), "--gesture", (root_ / "G.csv").string(), "--output",
+                       "wav:" + (root_ / wav).string()});
+  }
+  fs::path root_;
+};
+
+TEST_F(PlayerStudy, AScriptedRunOfTwoSetsOfFourImagesRecordsThePlanAndTheResponses) {
+  // The shipped example: 2 sets x 4 images x 5 repetitions.
+  const fs::path study_file = kExample / "study.xml";
+  const MatchingStudy study = load_study(study_file);
+  ASSERT_EQ(study.sets.size(), 2u);
+  const auto plan = study::plan_matching_trials(study, "P01");
+  ASSERT_EQ(plan.size(), 40u);
+  const auto chosen = write_responses(root_ / "R.csv", study, plan);
+  write_gesture(root_ / "G.csv", 0.1);
+
+  const Finished r = run_player(scripted(study_file, "P01", "out.wav"), root_ / "run");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto table = read_matching_trials(root_ / "results" / "P01.trials.csv");
+  ASSERT_TRUE(table.ok());
+  ASSERT_EQ(table.rows.size(), 40u);
+  for (std::size_t k = 1; k <= 40; ++k) {
+    const MatchingTrial& row = table.rows[k - 1];
+    const auto& set = study.sets[plan[k - 1].set];
+    EXPECT_EQ(row.participant, "P01");
+    EXPECT_EQ(row.trial, static_cast<int>(k));
+    EXPECT_EQ(row.set, set.name);
+    EXPECT_EQ(row.presented, study_image_name(set.images[plan[k - 1].image])) << "trial " << k;
+    EXPECT_EQ(row.chosen, chosen[k - 1]) << "trial " << k;
+    EXPECT_EQ(row.correct, row.presented == row.chosen);
+    EXPECT_NEAR(row.rub_s, 0.1, 1e-9);  // the gesture's duration
+    EXPECT_NEAR(row.path_mm, kGestureLengthMm, 1e-6);
+    EXPECT_EQ(row.response_s, 0.0);
+    EXPECT_EQ(row.time_utc.size(), 20u);
+    // One status line per trial, once its row is on disk.
+    EXPECT_NE(r.out.find("vimg-player: trial " + std::to_string(k) + " of 40 (set " + set.name + "): presented " +
+                         row.presented + ", chosen " + row.chosen + "\n"),
+              std::string::npos)
+        << r.out;
+  }
+  // The output received every trial's rubbing: a complete WAV, not silent.
+  const std::string wav = read_text(root_ / "out.wav");
+  ASSERT_GT(wav.size(), 44u);
+  EXPECT_EQ(wav.substr(0, 4), "RIFF");
+  EXPECT_GT(wav.size(), 40u * 0.1 * 8000 * 4);  // 40 gestures of 0.1 s at 8 kHz, float32
+}
+
+TEST_F(PlayerStudy, AFinishedParticipantIsRefusedAndRestartKeepsTheOldFileAside) {
+  const fs::path study_file = write_study(root_ / "study", 2, 2, 1);
+  const MatchingStudy study = load_study(study_file);
+  write_responses(root_ / "R.csv", study, study::plan_matching_trials(study, "P02"));
+  write_gesture(root_ / "G.csv", 0.05);
+  const fs::path trials = root_ / "results" / "P02.trials.csv";
+
+  ASSERT_EQ(run_player(scripted(study_file, "P02", "a.wav"), root_ / "first").exit_code, 0);
+  const std::string finished = read_text(trials);
+  ASSERT_EQ(rows_in(trials), 4u);
+
+  const Finished again = run_player(scripted(study_file, "P02", "b.wav"), root_ / "again");
+  EXPECT_EQ(again.exit_code, 1);
+  EXPECT_NE(again.err.find("participant P02 has finished all 4 trials"), std::string::npos) << again.err;
+  EXPECT_NE(again.err.find("--restart"), std::string::npos) << again.err;
+  EXPECT_EQ(read_text(trials), finished);
+  EXPECT_FALSE(fs::exists(root_ / "b.wav"));  // refused before the output is opened
+
+  auto restart_args = scripted(study_file, "P02", "c.wav");
+  restart_args.push_back("--restart");
+  const Finished restarted = run_player(restart_args, root_ / "restart");
+  ASSERT_EQ(restarted.exit_code, 0) << restarted.err;
+  EXPECT_EQ(rows_in(trials), 4u);
+  std::vector<fs::path> kept;
+  for (const auto& entry : fs::directory_iterator(root_ / "results")) {
+    if (entry.path() != trials) kept.push_back(entry.path());
+  }
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0].filename().string().rfind("P02.trials.", 0), 0u) << kept[0];
+  EXPECT_EQ(read_text(kept[0]), finished);  // kept aside, never overwritten
+}
+
+TEST_F(PlayerStudy, ResponsesMustAnswerEveryTrialWithAnImageOfItsSet) {
+  const fs::path study_file = write_study(root_ / "study", 1, 2, 2);
+  write_gesture(root_ / "G.csv", 0.05);
+  std::ofstream(root_ / "R.csv") << "trial,chosen\n1,dot\n2,square\n3,line\n";
+  const Finished r = run_player(scripted(study_file, "P03", "out.wav"), root_ / "run");
+  EXPECT_EQ(r.exit_code, 1);
+  const std::string responses = (root_ / "R.csv").string();
+  EXPECT_NE(r.err.find(responses + ":3: error: trial 2: 'square' is not an image of its set (dot, line)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(root_ / "results" / "P03.trials.csv"));
+  std::ofstream(root_ / "R.csv") << "trial,chosen\n1,dot\n2,line\n";
+  const Finished missing = run_player(scripted(study_file, "P03", "out.wav"), root_ / "missing");
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find(responses + ": error: no response for trial 3, 4"), std::string::npos) << missing.err;
+}
+
+TEST_F(PlayerStudy, MaskingNoiseNeedsAnAudioOutputThatExistsAndIsNotTheActuators) {
+  write_gesture(root_ / "G.csv", 0.05);
+  const fs::path absent = write_study(root_ / "absent", 1, 2, 1, "  <maskingNoise device=\"No Such Card\" level=\"0.2\"/>\n");
+  write_responses(root_ / "R.csv", load_study(absent), study::plan_matching_trials(load_study(absent), "P04"));
+  const Finished r = run_player(scripted(absent, "P04", "out.wav"), root_ / "absent_run");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("masking noise device 'No Such Card' does not exist; the audio outputs are (SDL driver dummy): "
+                       "'System audio output device'"),
+            std::string::npos)
+      << r.err;
+  // SDL's dummy driver has one output: the noise plays there while the actuator's drive goes to a file.
+  const fs::path present =
+      write_study(root_ / "present", 1, 2, 1, "  <maskingNoise device=\"System audio output device\" level=\"0.2\"/>\n");
+  const Finished ok = run_player(scripted(present, "P04", "out.wav"), root_ / "present_run");
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("masking noise white noise, RMS 0.2, on 'System audio output device'"), std::string::npos) << ok.out;
+  EXPECT_EQ(rows_in(root_ / "results" / "P04.trials.csv"), 2u);
+  // The actuator's own audio output cannot mask it.
+  auto same = study_args(present, "P05",
+                         {"--responses", (root_ / "R.csv").string(), "--gesture", (root_ / "G.csv").string(), "--output",
+                          "audio:System audio output device"});
+  const Finished refused = run_player(same, root_ / "same_run");
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("is the actuator's output"), std::string::npos) << refused.err;
+}
+
+}  // namespace
+}  // namespace vimg::study_test
