@@ -1,0 +1,123 @@
+// `vimg compare IMAGE... [--actuator P] [--gesture G.csv]... --out REPORT.json|.html|.csv`: will
+// people tell these images apart? (docs/studies.md, "Predicting confusion: vimg compare";
+// study/compare.hpp does the work, study/compare_output.hpp writes the report).
+#include <csignal>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/command.hpp"
+#include "hal/actuator_profile.hpp"
+#include "hal/rest_on_exit.hpp"
+#include "player/gesture.hpp"
+#include "storage/limits.hpp"
+#include "study/compare.hpp"
+#include "study/compare_output.hpp"
+
+namespace vimg::cli {
+
+namespace {
+
+struct CompareArgs {
+  std::vector<std::string> inputs;
+  std::string actuator;               // profile file; empty: the ideal actuator
+  std::vector<std::string> gestures;  // empty: the standard exploration
+  std::string out;
+};
+
+constexpr const char* kProgram = "vimg compare";
+
+int interrupted(const std::string& out) {
+  std::fprintf(stderr, "%s: interrupted; %s not written\n", kProgram, out.c_str());
+  return rest_signal() == SIGTERM ? cmdline::kExitSigterm : cmdline::kExitSigint;
+}
+
+// The gestures, each checked as `vimg render` checks its gesture; nothing after printing errors.
+std::optional<std::vector<study::CompareGesture>> load_gestures(const std::vector<std::string>& files) {
+  std::vector<study::CompareGesture> gestures;
+  bool ok = true;
+  for (const std::string& file : files) {
+    GestureParseResult g = load_gesture_file(file);
+    for (const std::string& e : g.errors) std::fprintf(stderr, "%s\n", e.c_str());
+    if (!g.ok()) {
+      ok = false;
+      continue;
+    }
+    const double span_s = std::max(0.0, g.gesture->end_time_s()) - std::min(0.0, g.gesture->start_time_s());
+    if (span_s > kMaxGestureDurationS) {
+      std::fprintf(stderr, "%s: error: the render would last %.0f s from time 0 (limit %.0f s); shift the times to start near 0\n",
+                   file.c_str(), span_s, kMaxGestureDurationS);
+      ok = false;
+      continue;
+    }
+    gestures.push_back({file, std::move(*g.gesture)});
+  }
+  if (!ok) return std::nullopt;
+  return gestures;
+}
+
+int run_compare_command(const CompareArgs& a) {
+  if (!study::is_compare_output(a.out))
+    return usage_error(kProgram, "--out must end in .json, .html or .csv: '" + a.out + "'");
+  if (a.inputs.size() < 2) return usage_error(kProgram, "give at least two images (or rendered signals) to compare");
+  if (a.inputs.size() > kMaxCompareInputs)
+    return usage_error(kProgram, std::to_string(a.inputs.size()) + " inputs (limit " + std::to_string(kMaxCompareInputs) + ")");
+
+  study::CompareRequest request;
+  for (const std::string& in : a.inputs) request.inputs.emplace_back(in);
+  if (!a.actuator.empty()) {
+    const ProfileLoadResult loaded = load_actuator_profile(a.actuator);
+    for (const std::string& e : loaded.errors) std::fprintf(stderr, "%s\n", e.c_str());
+    if (!loaded.profile) return kExitFailure;
+    request.actuator.name = loaded.profile->name.empty() ? a.actuator : loaded.profile->name;
+    request.actuator.file = a.actuator;
+    request.actuator.response = loaded.profile->response;
+  }
+  auto gestures = load_gestures(a.gestures);
+  if (!gestures) return kExitFailure;
+  request.gestures = std::move(*gestures);
+
+  // SIGINT/SIGTERM only set a flag; the renders stop at their next block and nothing is written.
+  const SignalRestScope signals;
+  request.should_stop = [] { return rest_requested(); };
+  const study::CompareResult result = study::run_compare(request);
+  for (const Diagnostic& d : result.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  if (result.interrupted || rest_requested()) return interrupted(a.out);
+  if (!result.ok()) return kExitFailure;
+  for (const std::string& w : result.warnings) std::fprintf(stderr, "%s: warning: %s\n", kProgram, w.c_str());
+  if (auto error = study::write_compare_output(a.out, result)) {
+    std::fprintf(stderr, "%s: %s\n", kProgram, error->c_str());
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& vimg, int& exit_code) {
+  CLI::App* sub = vimg.add_subcommand(
+      "compare", "predict which images of a set people will confuse (ST-SIM, sensation level, Shepard-Luce choice)");
+  auto a = std::make_shared<CompareArgs>();
+  sub->add_option("IMAGE", a->inputs,
+                  "two or more .vimg or .png images of one canvas size, or rendered signals (.wav or .csv of vimg render at "
+                  "8000 Hz), compared as they are")
+      ->required();
+  sub->add_option("--actuator", a->actuator,
+                  "actuator profile (assets/profiles/*.xml): the images are felt as its predicted acceleration; default: ideal");
+  sub->add_option("--gesture", a->gestures,
+                  "a gesture CSV to render every image under, instead of the standard exploration; repeat it for several, "
+                  "rendered one after another");
+  sub->add_option("--out", a->out,
+                  "REPORT.json (matrices and warnings), REPORT.html (self-contained, heat maps) or REPORT.csv (one row per "
+                  "pair: image_i,image_j,stsim,similarity,predicted_p), written atomically")
+      ->required();
+  sub->footer(
+      "Default exploration (docs/studies.md): horizontal and vertical serpentine passes 10 mm apart over the whole canvas at "
+      "40, 100 and 250 mm/s. Pairs likely confused are printed as warnings. At most " +
+      std::to_string(kMaxCompareInputs) + " inputs. SIGINT/SIGTERM write nothing and exit 130/143.");
+  sub->callback([a, &exit_code] { exit_code = run_compare_command(*a); });
+}
+
+}  // namespace vimg::cli

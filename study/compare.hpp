@@ -1,0 +1,93 @@
+#pragma once
+// `vimg compare` and the editor's prediction (docs/studies.md, "Predicting confusion: vimg
+// compare"): will people tell these images apart? Every image is rendered under the same gestures
+// (the standard exploration of study/exploration.hpp for the images' canvas, or the gestures given)
+// through the actuator's model (compare_render.hpp); a rendered signal (WAV or render CSV,
+// compare_signal.hpp) is taken as it is. Then the perceptual model of primitives/perception
+// (docs/perception.md): ST-SIM of every ordered pair, the symmetric perceptual similarity (ST-SIM
+// with the sensation level above the detection threshold), the Shepard-Luce predicted confusion,
+// and the pairs likely confused.
+//
+// Threads: run_compare() renders and analyses the images on `threads` threads at once
+// (storage/parallel_tasks.hpp) and blocks until all is done; it may run on any thread that is not a
+// real-time one (the editor runs it on a worker thread).
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "player/gesture.hpp"
+#include "primitives/actuator/response_params.hpp"
+#include "primitives/perception/perceptual_similarity.hpp"
+#include "primitives/perception/predicted_confusion.hpp"
+#include "primitives/perception/sensation_level.hpp"
+#include "storage/diagnostic.hpp"
+#include "study/exploration.hpp"
+
+namespace vimg::study {
+
+// The actuator the images are felt through (`--actuator P`; the ideal one by default).
+struct CompareActuator {
+  std::string name = "ideal";  // the profile's name
+  std::string file;            // the profile file as given; empty for the built-in ideal actuator
+  ResponseParams response;     // its response model (the ideal one gives the drive itself)
+};
+
+struct CompareGesture {
+  std::string file;  // as given (for reports)
+  Gesture gesture;
+};
+
+struct CompareRequest {
+  std::vector<std::filesystem::path> inputs;  // images (.vimg, .png) and rendered signals (.wav, .csv)
+  CompareActuator actuator;
+  std::vector<CompareGesture> gestures;  // empty: the standard exploration of the images' canvas
+  ExplorationSpec exploration;
+  LevelCalibration calibration;
+  SimilarityConstants similarity;
+  ChoiceModel choice;
+  int threads = 0;                       // <= 0: one per core
+  bool (*should_stop)() = nullptr;       // asked between render blocks (SIGINT); null: never
+};
+
+enum class CompareInputKind { image, wav_signal, csv_signal };
+
+struct CompareInput {
+  std::string path;   // as given
+  std::string label;  // its file name (the path as given when two inputs share a file name)
+  CompareInputKind kind = CompareInputKind::image;
+  double duration_s = 0.0;  // of its signal (rendered or read), at 8 kHz
+};
+
+struct CompareResult {
+  std::vector<CompareInput> inputs;
+  std::optional<double> canvas_width_mm, canvas_height_mm;  // the images' common canvas, if any image
+  std::optional<Exploration> exploration;                   // when the standard exploration was used
+  std::vector<std::string> gesture_files;                   // when gestures were given
+  CompareActuator actuator;
+  LevelCalibration calibration;
+  SimilarityConstants similarity_constants;
+  ChoiceModel choice;
+  PerceptionMatrix stsim;                // stsim[i][j]: input i against reference j; NaN: no value
+  PerceptionMatrix similarity;           // symmetric perceptual similarity
+  PerceptionMatrix predicted_confusion;  // rows presented, columns chosen, each row sums to 1
+  std::vector<ConfusedPair> likely_confused;
+  std::vector<std::string> warnings;     // "A.vimg ~ B.vimg: likely confused (p = 0.50)", one per pair
+  std::vector<Diagnostic> diagnostics;   // of the inputs (warnings, or errors: then nothing else is set)
+  bool interrupted = false;              // should_stop() said so; nothing else is set
+  bool ok() const { return !interrupted && !has_errors(diagnostics) && !predicted_confusion.empty(); }
+};
+
+// What an input is, by its extension: .wav and .csv are rendered signals, anything else an image.
+CompareInputKind compare_input_kind(const std::filesystem::path& path);
+
+// The warning for one likely confused pair: "A.vimg ~ B.vimg: likely confused (p = 0.50)".
+std::string confusion_warning(const std::string& label_a, const std::string& label_b, double p);
+
+// The whole comparison. Errors (an input that does not load, images of different canvas sizes, a
+// canvas too large for the standard exploration, fewer than 2 or more than kMaxCompareInputs
+// inputs) come back as diagnostics; the caller prints them.
+CompareResult run_compare(const CompareRequest& request);
+
+}  // namespace vimg::study

@@ -1,0 +1,116 @@
+// The HTML page of `vimg compare --out X.html` (compare_output.hpp): self-contained, readable
+// offline. The heat maps are the study report's (study/report_svg.hpp), so that a prediction and
+// the measured confusion of `vimg study report` look alike.
+#include <cmath>
+#include <cstdio>
+
+#include "study/compare_output.hpp"
+#include "study/report_svg.hpp"
+
+namespace vimg::study {
+
+namespace {
+
+constexpr const char* kStyle =
+    "body{font-family:sans-serif;margin:2em;max-width:60em;color:#111}"
+    "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #999;padding:0.25em 0.6em;text-align:right}"
+    "th{background:#eee}td.name,th.name{text-align:left}.warn{color:#8a3b00}.note{color:#555;font-size:0.9em}"
+    "figure{display:inline-block;margin:0 2em 1em 0;vertical-align:top}";
+
+std::string number_text(double v, int decimals) {
+  if (!std::isfinite(v)) return "\u2013";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", decimals, v);
+  return text;
+}
+
+std::vector<std::string> labels(const CompareResult& r) {
+  std::vector<std::string> out;
+  for (const CompareInput& in : r.inputs) out.push_back(in.label);
+  return out;
+}
+
+HeatMap heat_map(const CompareResult& r, const PerceptionMatrix& m, std::string title) {
+  HeatMap map;
+  map.title = std::move(title);
+  map.labels = labels(r);
+  for (const auto& row : m) {
+    std::vector<std::optional<double>> shade;
+    std::vector<std::string> cells;
+    for (const double v : row) {
+      shade.push_back(std::isfinite(v) ? std::optional(v) : std::nullopt);
+      cells.push_back(number_text(v, 2));
+    }
+    map.shade.push_back(std::move(shade));
+    map.cells.push_back(std::move(cells));
+  }
+  return map;
+}
+
+std::string stsim_table(const CompareResult& r) {
+  std::string s = "<table>\n<tr><th class=\"name\">ST-SIM of \u2193 against reference \u2192</th>";
+  for (const CompareInput& in : r.inputs) s += "<th>" + xml_text(in.label) + "</th>";
+  s += "</tr>\n";
+  for (std::size_t i = 0; i < r.inputs.size(); ++i) {
+    s += "<tr><td class=\"name\">" + xml_text(r.inputs[i].label) + "</td>";
+    for (std::size_t j = 0; j < r.inputs.size(); ++j) s += "<td>" + number_text(r.stsim[i][j], 3) + "</td>";
+    s += "</tr>\n";
+  }
+  return s + "</table>\n";
+}
+
+std::string setup_html(const CompareResult& r) {
+  std::string s = "<h2>How the images were felt</h2>\n<ul>\n";
+  const CompareActuator& a = r.actuator;
+  s += "<li>Actuator: " + xml_text(a.name) + (a.file.empty() ? " (built in)" : " (" + xml_text(a.file) + ")") +
+       "; each image's predicted acceleration at 8 kHz.</li>\n";
+  if (r.canvas_width_mm) {
+    s += "<li>Canvas: " + number_text(*r.canvas_width_mm, 1) + " \u00d7 " + number_text(*r.canvas_height_mm, 1) + " mm.</li>\n";
+  }
+  if (r.exploration) {
+    s += "<li>Exploration: the standard one, " + xml_text(describe(*r.exploration)) + ".</li>\n";
+  } else if (!r.gesture_files.empty()) {
+    std::string files;
+    for (const std::string& f : r.gesture_files) files += (files.empty() ? "" : ", ") + f;
+    s += "<li>Exploration: the gestures " + xml_text(files) + ", one after another.</li>\n";
+  }
+  for (const CompareInput& in : r.inputs) {
+    if (in.kind != CompareInputKind::image) {
+      s += "<li>" + xml_text(in.label) + " is a rendered signal, compared as it is (" + number_text(in.duration_s, 1) + " s).</li>\n";
+    }
+  }
+  s += "<li>Model: ST-SIM with the sensation level above the detection threshold (full scale " +
+       number_text(r.calibration.full_scale_peak_acceleration_mps2, 2) + " m/s\u00b2 peak, structure fully counted from " +
+       number_text(r.similarity_constants.full_structure_db, 1) + " dB, " +
+       number_text(r.similarity_constants.level_halving_db, 1) +
+       " dB of level difference halves the similarity); Shepard\u2013Luce choice with \u03c4 = " + number_text(r.choice.tau, 3) +
+       "; a pair is likely confused from p = " + number_text(r.choice.likely_confused_p, 2) + ".</li>\n</ul>\n";
+  return s;
+}
+
+}  // namespace
+
+std::string compare_html(const CompareResult& r) {
+  std::string s = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Predicted confusion</title>\n<style>";
+  s += kStyle;
+  s += "</style>\n</head>\n<body>\n<h1>Will people tell them apart?</h1>\n";
+  s += "<p class=\"note\">The predicted confusion of a matching test on these images: rows are the image presented, columns the "
+       "picture chosen, each row sums to 1.</p>\n";
+  s += "<h2>Warnings</h2>\n";
+  if (r.warnings.empty()) {
+    s += "<p>No pair is likely to be confused (p below " + number_text(r.choice.likely_confused_p, 2) + ").</p>\n";
+  } else {
+    s += "<ul>\n";
+    for (const std::string& w : r.warnings) s += "<li class=\"warn\">" + xml_text(w) + "</li>\n";
+    s += "</ul>\n";
+  }
+  s += "<figure>\n" + heat_map_svg(heat_map(r, r.predicted_confusion, "Predicted confusion")) + "</figure>\n";
+  s += "<figure>\n" + heat_map_svg(heat_map(r, r.similarity, "Perceptual similarity (symmetric)")) + "</figure>\n";
+  s += "<h2>ST-SIM</h2>\n" + stsim_table(r);
+  s += setup_html(r);
+  s += "<p class=\"note\">Written by vimg compare; the model is described in docs/perception.md and docs/studies.md.</p>\n";
+  s += "</body>\n</html>\n";
+  return s;
+}
+
+}  // namespace vimg::study
