@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "realtime/catch_up.hpp"
 #include "realtime/clock.hpp"
 
 namespace vimg {
@@ -145,23 +146,20 @@ void HapticLoop::run() {
   priority_errno_.store(priority.error_number, std::memory_order_release);
 
   const auto period_ns = static_cast<std::int64_t>(std::llround(1e9 / config_.rate_hz));
-  // Fewer missed periods than the overrun limit are caught up; more are skipped. Catching up
-  // overruns once per missed period, so one stall never trips the overrun watchdog: only work
-  // that keeps not fitting in the period does.
-  const std::int64_t catch_up_ns = period_ns * std::max(1, cycle_.safety().overrun_limit_cycles());
+  // The catch-up rule (realtime/catch_up.hpp): half the overrun limit, so that one stall never
+  // trips the overrun watchdog; only work that keeps not fitting in the period does.
+  const std::int64_t catch_up_periods = haptic_catch_up_periods(cycle_.safety().overrun_limit_cycles());
   const std::int64_t start_ns = monotonic_ns();
   std::int64_t deadline_ns = start_ns;
-  bool overran = false;
+  bool overran_last = false;
   for (;;) {
     deadline_ns += period_ns;
     sleep_until_ns(deadline_ns);
     const std::int64_t woke_ns = monotonic_ns();
     telemetry_.record_wake(woke_ns, deadline_ns);
-    if (woke_ns - deadline_ns >= catch_up_ns) {
-      // Too far behind to catch up: run this cycle at the latest deadline passed.
-      deadline_ns += (woke_ns - deadline_ns) / period_ns * period_ns;
-      telemetry_.record_skip();
-    }
+    const PacedDeadline paced = pace_deadline(deadline_ns, woke_ns, period_ns, catch_up_periods);
+    deadline_ns = paced.deadline_ns;
+    if (paced.skipped) telemetry_.record_skip();
     const double time_s = static_cast<double>(deadline_ns - start_ns) * 1e-9;
 
     // A faded-out scene goes back to the owner; while the slot is full it waits here, and no
@@ -180,7 +178,7 @@ void HapticLoop::run() {
       state_.store(LoopState::stopped, std::memory_order_release);
       return;
     }
-    const ForceCycleRecord record = cycle_.step(port_, time_s, overran);
+    const ForceCycleRecord record = cycle_.step(port_, time_s, overran_last);
     if (record.fault != ForceFault::none) {
       port_fault_.store(record.port_fault, std::memory_order_release);
       fault_.store(record.fault, std::memory_order_release);
@@ -189,8 +187,8 @@ void HapticLoop::run() {
       return;
     }
     publish(record, false);
-    overran = monotonic_ns() > deadline_ns + period_ns;
-    if (overran) telemetry_.record_overrun();
+    overran_last = overran(deadline_ns, monotonic_ns(), period_ns);
+    if (overran_last) telemetry_.record_overrun();
   }
 }
 

@@ -3,12 +3,13 @@
 // period, at 1 kHz by default and 100..4000 Hz, on the real-time core (realtime/):
 //   - pacing: absolute deadlines start + n * period on CLOCK_MONOTONIC (sleep_until_ns), so
 //     lateness never accumulates. After a stall the loop catches up, running the missed cycles
-//     back to back, while it is fewer than SafetySettings::overrun_limit_cycles periods behind;
-//     further behind it skips: the schedule moves forward to the latest deadline passed. Each
-//     caught-up cycle overruns, so a single stall never reaches the overrun limit, and the
-//     overrun fault means that the cycle's work itself does not fit in the period. Caught-up
-//     cycles keep the slew limit over wall time: the force changes by at most the slew limit
-//     times the periods that passed;
+//     back to back, while it is fewer than half SafetySettings::overrun_limit_cycles periods
+//     behind; further behind it skips: the schedule moves forward to the latest deadline passed
+//     (the rule: realtime/catch_up.hpp). Caught-up cycles overrun, so a single stall gives at most
+//     about half the overrun limit in a row and never trips the watchdog; the overrun fault
+//     means that the cycle's work itself does not fit in the period. Caught-up cycles keep the
+//     slew limit over wall time: the force changes by at most the slew limit times the periods
+//     that passed;
 //   - priority: request_realtime_priority on the loop thread (SCHED_FIFO when granted);
 //   - telemetry: LoopTelemetry (lateness p50/p99/max, overruns, skips, rate). An overrun is a
 //     cycle whose work finished after the next deadline; the safety stack faults after

@@ -65,7 +65,7 @@ struct SafetySettings {
   double wall_margin_m = 0.010;
   double wall_stiffness_N_per_m = 200.0;  // capped to the device's Kmax
   int stale_limit_cycles = 20;            // 20 ms at 1 kHz
-  int overrun_limit_cycles = 10;         // and the loop catches up fewer missed periods than this
+  int overrun_limit_cycles = 10;         // the loop catches up fewer missed periods than half this
 };
 
 struct SafetyInput {
