@@ -38,6 +38,13 @@ FileReadResult read_regular_file(const std::filesystem::path& path, std::size_t 
     else result.error = std::string("cannot open: ") + std::strerror(errno);
     return result;
   }
+  result = read_open_file(fd, max_bytes);
+  ::close(fd);
+  return result;
+}
+
+FileReadResult read_open_file(int fd, std::size_t max_bytes) {
+  FileReadResult result;
   struct stat st {};
   if (::fstat(fd, &st) != 0) {
     result.error = std::string("cannot read: ") + std::strerror(errno);
@@ -46,10 +53,7 @@ FileReadResult read_regular_file(const std::filesystem::path& path, std::size_t 
   } else if (static_cast<std::uint64_t>(st.st_size) > max_bytes) {
     result.error = "is larger than " + size_text(max_bytes) + " (limit " + std::to_string(max_bytes) + " bytes)";
   }
-  if (!result.error.empty()) {
-    ::close(fd);
-    return result;
-  }
+  if (!result.error.empty()) return result;
   std::string bytes(static_cast<std::size_t>(st.st_size), '\0');
   std::size_t filled = 0;
   for (;;) {
@@ -58,17 +62,15 @@ FileReadResult read_regular_file(const std::filesystem::path& path, std::size_t 
       bytes.resize(std::min(max_bytes + 1, bytes.size() + 65536));  // it may have grown since fstat
       if (filled == bytes.size()) break;
     }
-    const ssize_t n = ::read(fd, bytes.data() + filled, bytes.size() - filled);
+    const ssize_t n = ::pread(fd, bytes.data() + filled, bytes.size() - filled, static_cast<off_t>(filled));
     if (n < 0) {
       if (errno == EINTR) continue;
       result.error = std::string("cannot read: ") + std::strerror(errno);
-      ::close(fd);
       return result;
     }
     if (n == 0) break;
     filled += static_cast<std::size_t>(n);
   }
-  ::close(fd);
   if (filled > max_bytes) {
     result.error = "is larger than " + size_text(max_bytes) + " (limit " + std::to_string(max_bytes) + " bytes)";
     return result;

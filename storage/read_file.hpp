@@ -24,4 +24,9 @@ enum class FinalSymlink { follow, refuse };
 FileReadResult read_regular_file(const std::filesystem::path& path, std::size_t max_bytes,
                                  FinalSymlink final_symlink = FinalSymlink::follow);
 
+// The same checks and read on a file the caller has already opened (and keeps open): the trial log
+// (storage/study/trial_log.hpp) reads the file it holds locked and appends to. Reads from offset 0
+// whatever the descriptor's position; the descriptor stays open.
+FileReadResult read_open_file(int fd, std::size_t max_bytes);
+
 }  // namespace vimg
