@@ -1,3 +1,4 @@
+#include <cmath>
 #include <optional>
 
 #include "storage/export/json_writer.hpp"
@@ -7,8 +8,10 @@ namespace vimg::study {
 
 namespace {
 
+// Every number of the report: null when it is not finite (a file may hold numbers so large that a
+// mean overflows; JsonWriter would write such a value as 0).
 void optional_number(JsonWriter& w, const std::optional<double>& value) {
-  if (value) {
+  if (value && std::isfinite(*value)) {
     w.number(*value);
   } else {
     w.null();
@@ -18,8 +21,8 @@ void optional_number(JsonWriter& w, const std::optional<double>& value) {
 void interval(JsonWriter& w, const std::optional<Interval>& value) {
   if (!value) return w.null();
   w.begin_array();
-  w.number(value->lower);
-  w.number(value->upper);
+  optional_number(w, value->lower);
+  optional_number(w, value->upper);
   w.end_array();
 }
 
@@ -34,9 +37,9 @@ void comparison(JsonWriter& w, const GroupComparison& c) {
   w.key("n_b");
   w.integer(static_cast<long long>(c.summary_b.n));
   w.key("mean_a");
-  w.number(c.summary_a.mean);
+  optional_number(w, c.summary_a.mean);
   w.key("mean_b");
-  w.number(c.summary_b.mean);
+  optional_number(w, c.summary_b.mean);
   w.key("sd_a");
   optional_number(w, c.summary_a.sd);
   w.key("sd_b");
@@ -81,7 +84,7 @@ void predicted(JsonWriter& w, const PredictedComparison& p) {
   w.key("source");
   w.string(p.source);
   w.key("predicted");
-  matrix(w, p.predicted, [&](double x) { w.number(x); });
+  matrix(w, p.predicted, [&](double x) { optional_number(w, x); });
   w.key("measured");
   matrix(w, p.measured, [&](const std::optional<double>& x) { optional_number(w, x); });
   w.key("off_diagonal_cells");
@@ -106,11 +109,11 @@ void set_report(JsonWriter& w, const SetReport& s) {
   w.key("correct");
   w.integer(static_cast<long long>(s.correct));
   w.key("accuracy");
-  w.number(s.accuracy);
+  optional_number(w, s.accuracy);
   w.key("accuracy_ci95");
   interval(w, s.accuracy_ci95);
   w.key("chance");
-  w.number(s.chance);
+  optional_number(w, s.chance);
   w.key("per_image");
   w.begin_array();
   for (const ImageCounts& c : s.per_image) {
@@ -139,7 +142,7 @@ void set_report(JsonWriter& w, const SetReport& s) {
     w.key("correct");
     w.integer(static_cast<long long>(p.correct));
     w.key("accuracy");
-    w.number(p.accuracy);
+    optional_number(w, p.accuracy);
     w.end_object();
   }
   w.end_array();
@@ -168,7 +171,7 @@ void location_part(JsonWriter& w, const LocationReport& l) {
   interval(w, Interval{ws.z_min_mm, ws.z_max_mm});
   w.end_object();
   w.key("chance_mm");
-  w.number(l.chance_mm);
+  optional_number(w, l.chance_mm);
   w.key("metaphors");
   w.begin_array();
   for (const MetaphorReport& r : l.metaphors) {
@@ -178,13 +181,13 @@ void location_part(JsonWriter& w, const LocationReport& l) {
     w.key("n");
     w.integer(static_cast<long long>(r.n));
     w.key("mean_mm");
-    w.number(r.mean_mm);
+    optional_number(w, r.mean_mm);
     w.key("sd_mm");
     optional_number(w, r.sd_mm);
     w.key("ci99_mm");
     interval(w, r.ci99_mm);
     w.key("chance_mm");
-    w.number(r.chance_mm);
+    optional_number(w, r.chance_mm);
     w.end_object();
   }
   w.end_array();
@@ -205,7 +208,7 @@ void location_part(JsonWriter& w, const LocationReport& l) {
       w.integer(static_cast<long long>(m.n));
       w.key("mean_mm");
       if (m.n > 0) {
-        w.number(m.mean_mm);
+        optional_number(w, m.mean_mm);
       } else {
         w.null();
       }

@@ -57,7 +57,7 @@ std::string set_summary_text(const SetReport& set) {
 }
 
 ReportTable comparison_table(const SetReport& set) {
-  ReportTable t = square_table(set, "Comparison matrix: counts, rows presented, columns chosen", "presented \\ chosen");
+  ReportTable t = square_table(set, "Comparison matrix: counts, rows presented, columns chosen", "presented \u2193 chosen \u2192");
   t.header.push_back("total");
   std::vector<std::size_t> column_totals(set.images.size(), 0);
   for (std::size_t i = 0; i < set.images.size(); ++i) {
@@ -100,7 +100,7 @@ ReportTable set_participant_table(const SetReport& set) {
 std::optional<ReportTable> predicted_table(const SetReport& set) {
   if (!set.predicted) return std::nullopt;
   ReportTable t = square_table(set, "Predicted / measured confusion: rows presented, columns chosen, each row sums to 1",
-                               "presented \\ chosen");
+                               "presented \u2193 chosen \u2192");
   for (std::size_t i = 0; i < set.images.size(); ++i) {
     std::vector<std::string> row{set.images[i]};
     for (std::size_t j = 0; j < set.images.size(); ++j) {

@@ -48,8 +48,11 @@ std::optional<Interval> wilson_interval(std::size_t successes, std::size_t trial
   const double denominator = 1.0 + z2 / n;
   const double centre = (p + z2 / (2.0 * n)) / denominator;
   const double half = z / denominator * std::sqrt(p * (1.0 - p) / n + z2 / (4.0 * n * n));
-  // Rounding can put a bound a hair outside [0, 1] at p = 0 or 1.
-  return Interval{std::max(0.0, centre - half), std::min(1.0, centre + half)};
+  // At p = 0 (1) the lower (upper) bound is exactly 0 (1), where rounding would leave a hair beside it;
+  // elsewhere the bounds keep p between them.
+  const double lower = successes == 0 ? 0.0 : std::min(p, centre - half);
+  const double upper = successes == trials ? 1.0 : std::max(p, centre + half);
+  return Interval{std::max(0.0, lower), std::min(1.0, upper)};
 }
 
 std::optional<Interval> t_interval_of_mean(double mean, double sd, std::size_t n, double level) {

@@ -1,0 +1,93 @@
+// `vimg study report TRIALS.csv... [--predicted COMPARE.json]... --out REPORT.html|.json|.md`: the
+// report of the matching test (primitives paper, section 3) and of the location study (volume
+// paper, section 5) from the trial files the study runners write (docs/studies.md).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "cli/command.hpp"
+#include "storage/atomic_file.hpp"
+#include "storage/file_extension.hpp"
+#include "study/report_inputs.hpp"
+#include "study/report_writers.hpp"
+
+namespace vimg::cli {
+
+namespace {
+
+constexpr const char* kProgram = "vimg study report";
+
+struct ReportArgs {
+  std::vector<std::string> trials;
+  std::vector<std::string> predicted;
+  std::string out;
+};
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return std::filesystem::equivalent(a, b, ec) && !ec;
+}
+
+int run_report(const ReportArgs& a) {
+  const std::string ext = lower_extension(a.out);
+  if (ext != ".html" && ext != ".json" && ext != ".md")
+    return usage_error(kProgram, "--out must end in .html, .json or .md: '" + a.out + "'");
+  for (const std::vector<std::string>* inputs : {&a.trials, &a.predicted}) {
+    for (const std::string& input : *inputs) {
+      if (same_file(input, a.out)) return usage_error(kProgram, "--out names an input file: '" + a.out + "'");
+    }
+  }
+
+  const study::ReportInputs inputs = study::read_report_inputs({a.trials.begin(), a.trials.end()},
+                                                               {a.predicted.begin(), a.predicted.end()});
+  for (const Diagnostic& d : inputs.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  if (!inputs.ok()) {
+    std::fprintf(stderr, "%s: %s not written\n", kProgram, a.out.c_str());
+    return kExitFailure;
+  }
+  if (!inputs.has_trials()) {
+    std::fprintf(stderr, "%s: error: the trial files hold no trials; %s not written\n", kProgram, a.out.c_str());
+    return kExitFailure;
+  }
+  std::vector<Diagnostic> warnings;
+  const study::StudyReport report = study::make_study_report(inputs, warnings);
+  for (const Diagnostic& d : warnings) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  const std::string text = ext == ".json"   ? study::report_json(report)
+                           : ext == ".html" ? study::report_html(report)
+                                            : study::report_markdown(report);
+  if (const auto error = write_file_atomically(a.out, text)) {
+    std::fprintf(stderr, "%s: %s\n", kProgram, error->c_str());
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_study_command(CLI::App& vimg, int& exit_code) {
+  CLI::App* study = vimg.add_subcommand("study", "the matching test and the location study: report their trials (docs/studies.md)");
+  study->require_subcommand(1);
+  CLI::App* report = study->add_subcommand(
+      "report", "tables, statistics and figures of the trial files of the matching test and of the location study");
+  auto a = std::make_shared<ReportArgs>();
+  report->add_option("TRIALS", a->trials,
+                     "trial files (CSV, one per participant, as vimg-player --study and vimg-force --study write them); "
+                     "matching and location files may be mixed")
+      ->required();
+  report->add_option("--predicted", a->predicted,
+                     "the JSON report of `vimg compare` on a set's images: predicted confusion beside the measured one "
+                     "(images matched by file stem; may be repeated, one per set)");
+  report->add_option("--out", a->out, "REPORT.html (self-contained, inline SVG), REPORT.json or REPORT.md, written atomically")
+      ->required();
+  report->footer(
+      "Matching: per set the comparison matrix, TP/FN/FP/TN with hit and false-alarm rates, accuracy with its 95 % Wilson "
+      "interval against chance, accuracy per participant, Welch's t-test and Cohen's d between sets. Location: per metaphor "
+      "n, mean error, SD, 99 % t interval, chance, Welch's t-test between metaphors, per-participant means. Statistics, "
+      "formulas and the JSON keys: see docs/studies.md. Exit 1 on a malformed file (FILE:LINE: error), nothing written.");
+  report->callback([a, &exit_code] { exit_code = run_report(*a); });
+}
+
+}  // namespace vimg::cli
