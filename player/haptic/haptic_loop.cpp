@@ -160,7 +160,8 @@ void HapticLoop::run() {
     const PacedDeadline paced = pace_deadline(deadline_ns, woke_ns, period_ns, catch_up_periods);
     deadline_ns = paced.deadline_ns;
     if (paced.skipped) telemetry_.record_skip();
-    const double time_s = static_cast<double>(deadline_ns - start_ns) * 1e-9;
+    // The loop's time goes on from the previous run's last cycle: a port never sees it go back.
+    const double time_s = previous_runs_s_ + static_cast<double>(deadline_ns - start_ns) * 1e-9;
 
     // A faded-out scene goes back to the owner; while the slot is full it waits here, and no
     // new scene is taken, so at most three scenes are ever in play.
@@ -175,6 +176,7 @@ void HapticLoop::run() {
 
     if (stop_requested_.load(std::memory_order_acquire)) {
       publish(cycle_.stop(port_, time_s), true);
+      previous_runs_s_ = time_s;
       state_.store(LoopState::stopped, std::memory_order_release);
       return;
     }
@@ -183,6 +185,7 @@ void HapticLoop::run() {
       port_fault_.store(record.port_fault, std::memory_order_release);
       fault_.store(record.fault, std::memory_order_release);
       publish(record, true);
+      previous_runs_s_ = time_s;
       state_.store(LoopState::faulted, std::memory_order_release);
       return;
     }

@@ -87,8 +87,9 @@ class HapticLoop {
   // Hands a scene to the loop; it cross-fades from the current one. Control thread.
   void submit_scene(std::unique_ptr<HapticScene> scene);
 
-  // Starts the thread (the safety stack re-armed: gate, watchdogs, no fault). False if the rate is
-  // outside 100..4000 Hz or it already runs.
+  // Starts the thread (the safety stack re-armed: gate, watchdogs, no fault). The loop's time (the
+  // time_s the port and the scenes see) goes on from the previous run's last cycle, so it never
+  // goes back. False if the rate is outside 100..4000 Hz or it already runs.
   bool start();
   // Stops the thread; the device has received zero force when this returns.
   void stop();
@@ -138,6 +139,7 @@ class HapticLoop {
   std::atomic<HapticScene*> pending_{nullptr};
   std::atomic<HapticScene*> retired_{nullptr};
   HapticScene* unreturned_ = nullptr;  // loop thread only
+  double previous_runs_s_ = 0.0;  // the loop's time at the last run's end (loop thread while it runs)
   std::vector<std::unique_ptr<HapticScene>> owned_;  // control thread only: the one owner
   std::atomic<bool> stop_requested_{false};
   std::atomic<LoopState> state_{LoopState::idle};

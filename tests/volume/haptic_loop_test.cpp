@@ -247,19 +247,7 @@ TEST(HapticLoop, DestroyedWhileRunningWithAPendingSceneDuringACrossFade) {
   EXPECT_EQ(sim.force_N(), Vec3{});
 }
 
-TEST(HapticLoop, RestartsAfterAStopWithTheGateClosedAgain) {
-  SimulatedForceDevice sim(std::vector<HandPathPoint>{HandPathPoint{0.0, Vec3{}}}, HandModel{}, fast_slew_limits());
-  HapticLoop loop(sim, config(0.2, 10.0, 0.05));  // a 10 s ramp
-  loop.submit_scene(constant_scene({0.1, 0.0, 0.0}));
-  ASSERT_TRUE(loop.start());
-  wait_for_cycles(loop, 20);
-  loop.stop();
-  ASSERT_TRUE(loop.start());
-  wait_for_cycles(loop, 5);
-  EXPECT_TRUE(loop.last_flags() & safety_flag::gate);
-  EXPECT_LT(loop.last_sent_N().x, 0.1 * 0.01);
-  loop.stop();
-}
+// Restarts: haptic_loop_restart_test.cpp.
 
 TEST(HapticLoop, RejectsRatesOutside100To4000Hz) {
   SimulatedForceDevice sim(std::vector<HandPathPoint>{HandPathPoint{0.0, Vec3{}}});
