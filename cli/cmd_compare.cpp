@@ -99,6 +99,7 @@ int run_compare_command(const CompareArgs& a) {
 void add_compare_command(CLI::App& vimg, int& exit_code) {
   CLI::App* sub = vimg.add_subcommand(
       "compare", "predict which images of a set people will confuse (ST-SIM, sensation level, Shepard-Luce choice)");
+  sub->set_version_flag("--version", std::string(cmdline::version()), "print the version and exit");
   auto a = std::make_shared<CompareArgs>();
   sub->add_option("IMAGE", a->inputs,
                   "two or more .vimg or .png images of one canvas size, or rendered signals (.wav or .csv of vimg render at "
