@@ -1,7 +1,7 @@
 // The scripted matching test (--responses, --gesture): the same flow and screens as the live run,
 // driven by the files instead of a person. Training is skipped and pauses continue at once. Each
-// trial, the gesture's touches go to the flow at the gesture's own times (a virtual clock: rub_s is
-// the gesture's duration, path_mm its length, response_s 0) and its rubbing is rendered with the
+// trial, the gesture's touches go to the flow at the gesture's own times (a virtual clock that starts
+// at 0 with each trial: rub_s is exactly the gesture's duration, path_mm its length, response_s 0) and its rubbing is rendered with the
 // offline renderer over the presented image's scene into the one output stream (study_stream_sink:
 // the same samples on any machine, played at the gesture's pace).
 #include <algorithm>
@@ -53,7 +53,7 @@ int run_scripted_study(StudySession& session, const std::vector<std::size_t>& ch
   StudyFlowOptions options;
   options.training_s = 0.0;
   options.welcome = false;
-  double clock_s = 0.0;  // the virtual clock: the gestures one after the other
+  constexpr double clock_s = 0.0;  // each trial's virtual clock starts here
   StudyFlow flow(session.material.images_per_set(), session.material.plan, session.log.completed(), options, clock_s);
 
   StudyStreamSink stream(session.drive);
@@ -79,11 +79,10 @@ int run_scripted_study(StudySession& session, const std::vector<std::size_t>& ch
     const auto& scene = *session.scenes[flow.set()][flow.presented()];
     if (render_gesture(scene, gesture, stream, render).interrupted) break;
     session.report_messages();
-    clock_s += duration_s;
-    flow.answer(clock_s);
+    flow.answer(clock_s + duration_s);
     // Answering: the set's pictures; the scripted tap.
-    session.draw(flow, true, clock_s);
-    const auto result = flow.choose(chosen[flow.trial() - 1], clock_s);
+    session.draw(flow, true, clock_s + duration_s);
+    const auto result = flow.choose(chosen[flow.trial() - 1], clock_s + duration_s);
     if (!result || !session.record(*result)) return cmdline::kExitFailure;
     quit = quit_asked();
   }

@@ -84,3 +84,50 @@ TEST(PlayerArgs, EqualizeIsOffUnlessAskedFor) {
 
 }  // namespace
 }  // namespace vimg::player_app
+
+namespace vimg::player_app {
+namespace {
+
+TEST(PlayerArgs, StudyOptionsArriveTogether) {
+  const Parsed r = parse({"--study", "s.xml", "--participant", "P-01_a", "--results", "out", "--restart"});
+  ASSERT_TRUE(r.result.args.has_value()) << r.err;
+  EXPECT_EQ(r.result.args->study_path, "s.xml");
+  EXPECT_EQ(r.result.args->participant, "P-01_a");
+  EXPECT_EQ(r.result.args->results_dir, "out");
+  EXPECT_TRUE(r.result.args->restart);
+  EXPECT_FALSE(r.result.args->responses_path.has_value());
+  const Parsed scripted = parse({"--study", "s.xml", "--participant", "P", "--results", "out", "--responses", "r.csv",
+                                 "--gesture", "g.csv", "--output", "wav:x.wav"});
+  ASSERT_TRUE(scripted.result.args.has_value()) << scripted.err;
+  EXPECT_EQ(scripted.result.args->responses_path, "r.csv");
+  EXPECT_EQ(scripted.result.args->gesture_path, "g.csv");
+  EXPECT_FALSE(parse({"i.vimg"}).result.args->study_path.has_value());
+}
+
+TEST(PlayerArgs, StudyOptionsThatDoNotFitAreUsageErrors) {
+  for (const std::vector<std::string>& bad : std::vector<std::vector<std::string>>{
+           {"--study", "s.xml"},
+           {"--study", "s.xml", "--participant", "P"},
+           {"--study", "s.xml", "--results", "out"},
+           {"--participant", "P", "--results", "out", "i.vimg"},
+           {"i.vimg", "--restart"},
+           {"--study", "s.xml", "--participant", "P", "--results", "out", "--responses", "r.csv"},
+           {"--study", "s.xml", "--participant", "P", "--results", "out", "--gesture", "g.csv"},
+           {"--study", "s.xml", "--participant", "P", "--results", "out", "i.vimg"},
+           {"--study", "s.xml", "--participant", "P", "--results", "out", "--calibrate"},
+           {"--study", "", "--participant", "P", "--results", "out"},
+           {"--study", "s.xml", "--participant", "a b", "--results", "out"},
+           {"--study", "s.xml", "--participant", "../x", "--results", "out"},
+           {"--study", "s.xml", "--participant", std::string(65, 'p'), "--results", "out"}}) {
+    const Parsed r = parse(bad);
+    EXPECT_FALSE(r.result.args.has_value()) << bad[0];
+    EXPECT_EQ(r.result.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("vimg-player: error: ", 0), 0u) << r.err;
+  }
+  EXPECT_NE(parse({"--study", "s.xml", "--participant", "a/b", "--results", "o"}).err.find("--participant 'a/b': an ID is"),
+            std::string::npos);
+  EXPECT_NE(parse({"--study", "s.xml"}).err.find("--study needs --participant and --results"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace vimg::player_app

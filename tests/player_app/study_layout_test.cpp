@@ -47,7 +47,7 @@ TEST(StudyLayout, AnswerSheetsShareTheLargestScaleThatFitsAndNeverExceedTrueSize
     EXPECT_NEAR(p.picture.w, 60.0 * grid.px_per_mm, 1e-9);
     EXPECT_GE(p.label.y, p.picture.y + p.picture.h - 1e-9);
   }
-  EXPECT_NEAR(grid.px_per_mm, (712.0 - 2 * kStudyMarginPx - kStudyLabelPx) / 110.0, 1e-9);
+  EXPECT_NEAR(grid.px_per_mm, (1024.0 / 4 - 2 * kStudyMarginPx) / 60.0, 1e-9);  // the width limits
   EXPECT_EQ(picture_grid(area, tall, 3.0).px_per_mm, 3.0);  // capped at true size
   // Wide sheets on a portrait window stack.
   const std::vector<std::pair<double, double>> wide(4, {110.0, 60.0});
