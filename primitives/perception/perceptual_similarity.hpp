@@ -33,7 +33,7 @@ PerceptualFeatures analyse(std::span<const double> signal_8khz, const LevelCalib
 
 struct SimilarityConstants {
   double full_structure_db = 10.0;  // sensation level at which structure counts fully
-  double level_halving_db = 6.0;    // a level difference that halves the similarity
+  double level_halving_db = 20.0;   // a level difference that halves the similarity
 };
 
 struct PerceptualSimilarity {
