@@ -1,6 +1,11 @@
 #pragma once
 // The command line of vimg-force (`vimg-force --help` lists it), parsed with the project's
 // conventions (cmdline/command_line.hpp): --help and --version exit 0, usage errors exit 2.
+// Two ways to run it:
+//   vimg-force SCENE --device ...                       a scene's haptic loop (force_session.hpp)
+//   vimg-force --study LSTUDY.xml --participant ID --results DIR --device ...
+//                                                       the volume paper's location study
+//                                                       (location_study.hpp)
 #include <optional>
 #include <string>
 
@@ -16,7 +21,14 @@ struct ForceArgs {
   std::string log_file;        // the per-cycle CSV log
   std::string telemetry_file;  // the run's JSON summary
   int realtime_priority = 80;  // SCHED_FIFO for the loop thread; 0: normal scheduling
+  // The location study (study_file set: the program runs the study instead of a scene).
+  std::string study_file;   // --study LSTUDY.xml
+  std::string participant;  // --participant ID ([A-Za-z0-9_-]{1,64})
+  std::string results_dir;  // --results DIR: DIR/ID.location.csv
+  bool restart = false;     // --restart: a finished participant's file is kept aside, the study begins again
+  std::string marks_file;   // sim only: per trial, when the simulated participant presses button 0 (trial,time_s)
   bool is_sim() const { return device == "sim"; }
+  bool is_study() const { return !study_file.empty(); }
 };
 
 struct ForceArgsResult {

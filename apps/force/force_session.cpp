@@ -1,13 +1,12 @@
 #include "apps/force/force_session.hpp"
 
-#include <unistd.h>
-
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
 
+#include "apps/force/loop_run.hpp"
 #include "apps/force/status_line.hpp"
 #include "cmdline/command_line.hpp"
 #include "hal/force/force_device_opener.hpp"
@@ -21,8 +20,6 @@
 namespace vimg::force_app {
 namespace {
 
-constexpr std::int64_t kPollPeriod_ns = 10'000'000;
-
 void error(const std::string& message) { std::fprintf(stderr, "vimg-force: error: %s\n", message.c_str()); }
 
 void print_diagnostics(const std::vector<Diagnostic>& diagnostics) {
@@ -35,8 +32,6 @@ bool folder_exists_for(const std::string& file) {
   std::error_code ec;
   return parent.empty() || std::filesystem::is_directory(parent, ec);
 }
-
-int interrupted(int signal) { return signal == SIGTERM ? cmdline::kExitSigterm : cmdline::kExitSigint; }
 
 }  // namespace
 
@@ -67,7 +62,7 @@ int run_force_session(const ForceArgs& args, const std::atomic<int>& signal_rece
     error(opened.error);
     return cmdline::kExitFailure;
   }
-  if (const int s = signal_received.load()) return interrupted(s);  // nothing has moved yet
+  if (const int s = signal_received.load()) return exit_code_for_signal(s);  // nothing has moved yet
 
   HapticLoopConfig config = haptic_loop_config(profile, args.realtime_priority);
   // Two seconds of rows: the writer drains the ring every 5 ms.
@@ -87,45 +82,27 @@ int run_force_session(const ForceArgs& args, const std::atomic<int>& signal_rece
     error("cannot start the haptic loop at " + format_decimal(profile.rate_hz) + " Hz (100..4000)");
     return cmdline::kExitFailure;
   }
-
-  const bool terminal = ::isatty(STDERR_FILENO) == 1;
   const double start_s = monotonic_s();
-  double next_status_s = start_s + 1.0;
+
   bool announced = false;
-  bool status_shown = false;
-  std::string exit_reason;
-  int code = cmdline::kExitOk;
-  for (;;) {
-    sleep_until_ns(monotonic_ns() + kPollPeriod_ns);
-    if (const int s = signal_received.load()) {
-      exit_reason = s == SIGTERM ? "SIGTERM" : "SIGINT";
-      code = interrupted(s);
-      break;
-    }
-    if (!loop.running()) {
-      exit_reason = "device fault: " + loop.fault_text();
-      code = cmdline::kExitFailure;
-      break;
-    }
-    const double now_s = monotonic_s();
-    if (args.seconds && now_s - start_s >= *args.seconds) {
-      exit_reason = "seconds elapsed";
-      break;
-    }
+  TerminalStatusLine status;
+  double next_status_s = 1.0;
+  LoopWatch watch;
+  if (args.seconds) watch.finished = [&] { return monotonic_s() - start_s >= *args.seconds; };
+  watch.tick = [&](double elapsed_s) {
     if (!announced && loop.cycles() > 0) {
       announced = true;
-      std::fprintf(stderr, "vimg-force: %s at %s Hz, clamp %s N, slew %s N/ms, %s\n", opened.description.c_str(),
-                   format_decimal(loop.rate_hz()).c_str(), format_decimal(loop.safety().clamp_N()).c_str(),
-                   format_decimal(loop.safety().max_slew_N_per_ms()).c_str(), describe(loop.realtime_priority()).c_str());
+      std::fprintf(stderr, "%s\n", loop_announcement(loop, opened.description).c_str());
     }
-    if (terminal && now_s >= next_status_s) {
+    if (elapsed_s >= next_status_s) {
       next_status_s += 1.0;
-      std::fprintf(stderr, "\r%s\x1b[K", format_status_line(loop.status()).c_str());
-      status_shown = true;
+      status.show(format_status_line(loop.status()));
     }
-  }
-  loop.stop();  // zero force before anything else
-  if (status_shown) std::fputc('\n', stderr);
+  };
+  const LoopRunEnd end = watch_loop(loop, signal_received, watch);  // the device is at rest when it returns
+  status.finish();
+  const std::string exit_reason = end.reason("seconds elapsed");
+  int code = end.exit_code();
 
   if (log) {
     if (auto failure = log->finish()) {

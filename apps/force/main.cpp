@@ -1,15 +1,18 @@
 // vimg-force: feel a volume scene with a force device (docs/volume.md, "Feel it with a force
-// device").
+// device"), or run the volume paper's location study on it ("Location study").
 //   vimg-force SCENE --device sim|hid[:PATH] [--path P.csv] [--seconds S] [--log F.csv]
 //              [--telemetry T.json] [--realtime-priority N]
+//   vimg-force --study LSTUDY.xml --participant ID --results DIR --device sim|hid[:PATH]
+//              [--restart] [--path P.csv --marks M.csv] [--realtime-priority N]
 // Headless: the haptic loop runs on its own real-time thread; this thread waits for the end (the
-// time, a signal or a fault), then stops the loop (zero force first), completes the log and the
-// telemetry, and exits 0, 130 (SIGINT), 143 (SIGTERM), 1 (fault or bad input) or 2 (usage).
+// time, a mark, a signal or a fault), then stops the loop (zero force first), completes its files,
+// and exits 0, 130 (SIGINT), 143 (SIGTERM), 1 (fault or bad input) or 2 (usage).
 #include <atomic>
 #include <csignal>
 
 #include "apps/force/force_args.hpp"
 #include "apps/force/force_session.hpp"
+#include "apps/force/location_study.hpp"
 
 namespace {
 
@@ -33,5 +36,6 @@ int main(int argc, char** argv) {
   const auto parsed = vimg::force_app::parse_force_args(argc, argv);
   if (!parsed.args) return parsed.exit_code;
   catch_signals();
+  if (parsed.args->is_study()) return vimg::force_app::run_location_study(*parsed.args, g_signal);
   return vimg::force_app::run_force_session(*parsed.args, g_signal);
 }

@@ -1,0 +1,401 @@
+// vimg-force --study, the program itself on the simulated device (docs/volume.md, "Location
+// study"): the shipped example end to end (14 rows whose targets follow from the seeds, marks at the
+// hand's place at the scripted times, exact errors), SIGKILL in the middle and a rerun that continues,
+// a finished participant refused and restarted, SIGTERM and SIGINT between marks, no HID device, and
+// bad input.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "primitives/volume/study_set.hpp"
+#include "storage/number_text.hpp"
+#include "storage/study/study_file.hpp"
+#include "storage/study/trial_table.hpp"
+#include "storage/volume/probe_path_io.hpp"
+#include "study/trial_plan.hpp"
+
+namespace vimg {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kForce = fs::path(VIMG_BINARY_DIR) / "apps" / "force" / "vimg-force";
+const fs::path kExample = fs::path(VIMG_SOURCE_DIR) / "assets" / "examples" / "location";
+constexpr double kPeriodS = 1e-3;  // the study's loop rate is 1 kHz
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct Child {
+  pid_t pid = -1;
+  fs::path out, err;
+};
+
+struct Exit {
+  int code = -1;
+  std::string out, err;
+  double seconds = 0.0;
+};
+
+// Starts vimg-force in `dir` with stdin from /dev/null (never a terminal), stdout and stderr captured.
+Child spawn(const std::vector<std::string>& args, const fs::path& dir, const std::string& capture_name) {
+  Child c;
+  c.out = dir.parent_path() / (capture_name + ".stdout");
+  c.err = dir.parent_path() / (capture_name + ".stderr");
+  std::vector<std::string> argv_text{kForce.string()};
+  argv_text.insert(argv_text.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : argv_text) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  c.pid = ::fork();
+  if (c.pid == 0) {
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    if (::chdir(dir.c_str()) != 0) _exit(126);
+    const int in = ::open("/dev/null", O_RDONLY);
+    const int out = ::open(c.out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = ::open(c.err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(in, 0);
+    ::dup2(out, 1);
+    ::dup2(err, 2);
+    ::execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return c;
+}
+
+Exit wait_for(const Child& c, std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now()) {
+  Exit e;
+  int status = 0;
+  if (c.pid > 0 && ::waitpid(c.pid, &status, 0) == c.pid) {
+    e.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  e.out = read_text(c.out);
+  e.err = read_text(c.err);
+  return e;
+}
+
+Exit run(const std::vector<std::string>& args, const fs::path& dir, const std::string& name = "run") {
+  const auto start = std::chrono::steady_clock::now();
+  return wait_for(spawn(args, dir, name), start);
+}
+
+// Complete rows in a trial file (lines after the header that end in a line break).
+std::size_t complete_rows(const fs::path& csv) {
+  const std::string text = read_text(csv);
+  const auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  return lines == 0 ? 0 : lines - 1;
+}
+
+// Waits until the trial file holds `rows` complete rows: true, or false when the program ended first
+// or a minute passed.
+bool wait_for_rows(const Child& c, const fs::path& csv, std::size_t rows) {
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < give_up) {
+    if (complete_rows(csv) >= rows) return true;
+    int status = 0;
+    if (::waitpid(c.pid, &status, WNOHANG) == c.pid) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return false;
+}
+
+std::vector<std::string> files_in(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::vector<LocationTrial> trials_in(const fs::path& csv) {
+  const TrialTableResult<LocationTrial> table = read_location_trials(csv);
+  EXPECT_TRUE(table.ok()) << (table.diagnostics.empty() ? "" : table.diagnostics.front().to_string());
+  return table.rows;
+}
+
+// The hand's path (mm) at time t, linearly interpolated and held at its ends, as the simulator moves it.
+struct HandPath {
+  std::vector<ProbePathPoint> points;
+  Vec3 at_mm(double t) const {
+    if (t <= points.front().time_s) return points.front().position_m * 1e3;
+    if (t >= points.back().time_s) return points.back().position_m * 1e3;
+    std::size_t i = 1;
+    while (points[i].time_s < t) ++i;
+    const ProbePathPoint &a = points[i - 1], &b = points[i];
+    const double u = (t - a.time_s) / (b.time_s - a.time_s);
+    return (a.position_m + u * (b.position_m - a.position_m)) * 1e3;
+  }
+  double max_speed_mm_per_s() const {
+    double v = 0.0;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      v = std::max(v, norm(points[i].position_m - points[i - 1].position_m) * 1e3 /
+                          (points[i].time_s - points[i - 1].time_s));
+    }
+    return v;
+  }
+};
+
+HandPath example_path() {
+  const ProbePathParseResult parsed = parse_probe_path_csv(read_text(kExample / "hand_path.csv"), "hand_path.csv");
+  EXPECT_TRUE(parsed.path.has_value());
+  return HandPath{parsed.path.value_or(std::vector<ProbePathPoint>{{0.0, {}}})};
+}
+
+// trial,time_s rows, read here without the program's reader.
+std::vector<double> example_marks() {
+  std::vector<double> times;
+  std::istringstream in(read_text(kExample / "marks.csv"));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "trial,time_s");
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    EXPECT_EQ(line.substr(0, line.find(',')), std::to_string(times.size() + 1));
+    times.push_back(std::get<double>(parse_decimal(line.substr(line.find(',') + 1))));
+  }
+  return times;
+}
+
+std::vector<study::LocationTrialPlan> example_plan(const std::string& participant) {
+  const StudyFileResult<LocationStudy> study = load_location_study(kExample / "study.xml");
+  EXPECT_TRUE(study.ok());
+  return study.ok() ? study::plan_location_trials(*study.study, participant) : std::vector<study::LocationTrialPlan>{};
+}
+
+// Rows 1..n in order, each the plan's trial: its metaphor, its seed and the target that seed makes.
+void expect_planned(const std::vector<LocationTrial>& rows, const std::string& participant) {
+  const auto plan = example_plan(participant);
+  ASSERT_GE(plan.size(), rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const LocationTrial& r = rows[i];
+    EXPECT_EQ(r.participant, participant);
+    EXPECT_EQ(r.trial, static_cast<int>(i + 1));
+    EXPECT_EQ(r.metaphor, plan[i].metaphor) << "trial " << i + 1;
+    EXPECT_EQ(r.seed, plan[i].data_seed) << "trial " << i + 1;
+    const StudyLayout layout = study_layout(r.seed);
+    EXPECT_EQ(r.target_x_mm, layout.bend_x_mm) << "trial " << i + 1;
+    EXPECT_EQ(r.target_z_mm, layout.plane_z_mm) << "trial " << i + 1;
+    EXPECT_EQ(r.error_mm, std::hypot(r.mark_x_mm - r.target_x_mm, r.mark_z_mm - r.target_z_mm)) << "trial " << i + 1;
+    EXPECT_EQ(r.time_utc.size(), 20u);
+    EXPECT_EQ(r.time_utc.substr(10, 1) + r.time_utc.substr(19), "TZ") << r.time_utc;
+  }
+}
+
+// "trial N of TOTAL  METAPHOR  elapsed S s", with "  marked" at the mark: nothing else.
+bool is_trial_status(std::string line, std::size_t total) {
+  auto take = [&](const std::string& prefix) {
+    if (line.rfind(prefix, 0) != 0) return false;
+    line.erase(0, prefix.size());
+    return true;
+  };
+  auto digits = [&] {
+    const std::size_t n = line.find_first_not_of("0123456789");
+    if (n == 0 || n == std::string::npos) return false;
+    line.erase(0, n);
+    return true;
+  };
+  if (!take("trial ") || !digits() || !take(" of " + std::to_string(total) + "  ")) return false;
+  if (!take("roughness  elapsed ") && !take("transition cue  elapsed ")) return false;
+  if (!digits() || !take(" s")) return false;
+  return line.empty() || line == "  marked";
+}
+
+class LocationStudyRun : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = fs::path(VIMG_BINARY_DIR) / "test_output" / "force_app_location" /
+            ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(root_);
+    fs::create_directories(root_ / "results");
+  }
+  fs::path results() const { return root_ / "results"; }
+  fs::path csv(const std::string& participant) const { return results() / (participant + ".location.csv"); }
+  // The example study on the simulated device, with the example's hand path and `marks`.
+  std::vector<std::string> study_args(const std::string& participant, const fs::path& marks) const {
+    return {"--study", (kExample / "study.xml").string(), "--participant", participant, "--results", results().string(),
+            "--device", "sim", "--path", (kExample / "hand_path.csv").string(), "--marks", marks.string(),
+            "--realtime-priority", "0"};
+  }
+  // A marks file for 14 trials: trials 1..fast at `fast_s`, the rest at `slow_s`.
+  fs::path marks_file(const std::string& name, std::size_t fast, double fast_s, double slow_s) const {
+    std::ofstream out(root_ / name);
+    out << "trial,time_s\n";
+    for (std::size_t k = 1; k <= 14; ++k) out << k << "," << format_decimal(k <= fast ? fast_s : slow_s) << "\n";
+    return root_ / name;
+  }
+  fs::path root_;
+};
+
+TEST_F(LocationStudyRun, TheExampleRunsEndToEndOnTheSimulatedDevice) {
+  const Exit e = run(study_args("P01", kExample / "marks.csv"), root_);
+  ASSERT_EQ(e.code, 0) << e.err;
+  EXPECT_EQ(files_in(results()), (std::vector<std::string>{"P01.location.csv"}));
+  const std::vector<LocationTrial> rows = trials_in(csv("P01"));
+  ASSERT_EQ(rows.size(), 14u);
+  expect_planned(rows, "P01");
+  // Blocked: seven of one metaphor, then seven of the other.
+  for (std::size_t i = 0; i < 14; ++i) EXPECT_EQ(rows[i].metaphor, rows[i < 7 ? 0 : 7].metaphor) << i;
+  EXPECT_NE(rows[0].metaphor, rows[7].metaphor);
+  // Every trial a new data set.
+  for (std::size_t i = 1; i < 14; ++i) EXPECT_NE(rows[i].seed, rows[i - 1].seed);
+  // The mark is the hand on its path at the first loop cycle at or after the scripted press.
+  const HandPath path = example_path();
+  const std::vector<double> marks = example_marks();
+  ASSERT_EQ(marks.size(), 14u);
+  for (std::size_t i = 0; i < 14; ++i) {
+    const LocationTrial& r = rows[i];
+    EXPECT_GE(r.explore_s, marks[i] - 1e-12) << "trial " << i + 1;
+    EXPECT_LT(r.explore_s, marks[i] + kPeriodS + 1e-9) << "trial " << i + 1;
+    const Vec3 mark{r.mark_x_mm, r.mark_y_mm, r.mark_z_mm};
+    EXPECT_LT(norm(mark - path.at_mm(r.explore_s)), 1e-9) << "trial " << i + 1;
+    EXPECT_LE(norm(mark - path.at_mm(marks[i])), path.max_speed_mm_per_s() * kPeriodS + 1e-9) << "trial " << i + 1;
+  }
+  // The terminal saw every trial, never a target or a mark.
+  EXPECT_NE(e.err.find("trial 1 of 14  "), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("trial 14 of 14  "), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("has finished all 14 trials"), std::string::npos) << e.err;
+  for (const LocationTrial& r : rows) {
+    for (double v : {r.target_x_mm, r.target_z_mm, r.error_mm}) {
+      EXPECT_EQ(e.err.find(format_decimal(v)), std::string::npos) << format_decimal(v) << " shown in:\n" << e.err;
+    }
+  }
+  std::istringstream lines(e.err);
+  for (std::string line; std::getline(lines, line);) {
+    EXPECT_TRUE(line.rfind("vimg-force: ", 0) == 0 || is_trial_status(line, 14)) << line;
+  }
+}
+
+TEST_F(LocationStudyRun, SigkillLosesAtMostTheTrialUnderWayAndARerunContinues) {
+  const fs::path marks = marks_file("quick.csv", 14, 0.3, 0.3);
+  const Child first = spawn(study_args("P02", marks), root_, "first");
+  ASSERT_TRUE(wait_for_rows(first, csv("P02"), 4)) << read_text(first.err);
+  ::kill(first.pid, SIGKILL);
+  const Exit killed = wait_for(first);
+  ASSERT_EQ(killed.code, 128 + SIGKILL) << killed.err;
+  const std::string before = read_text(csv("P02"));
+  const std::size_t done = complete_rows(csv("P02"));
+  ASSERT_GE(done, 4u);
+  ASSERT_LT(done, 14u) << "the study ended before the kill";
+  ASSERT_EQ(before.back(), '\n');
+
+  const Exit rerun = run(study_args("P02", marks), root_, "rerun");
+  ASSERT_EQ(rerun.code, 0) << rerun.err;
+  EXPECT_NE(rerun.err.find("continues at trial " + std::to_string(done + 1) + " of 14"), std::string::npos) << rerun.err;
+  const std::string after = read_text(csv("P02"));
+  EXPECT_EQ(after.substr(0, before.size()), before);  // the rows written before the kill, untouched
+  const std::vector<LocationTrial> rows = trials_in(csv("P02"));
+  ASSERT_EQ(rows.size(), 14u);  // trials 1..14, none repeated, none missing
+  expect_planned(rows, "P02");
+
+  // A finished participant is refused; --restart keeps the file aside and runs the study again.
+  const Exit again = run(study_args("P02", marks), root_, "again");
+  EXPECT_EQ(again.code, 1);
+  EXPECT_NE(again.err.find("participant P02 has finished all 14 trials"), std::string::npos) << again.err;
+  EXPECT_EQ(read_text(csv("P02")), after);
+  std::vector<std::string> restart_args = study_args("P02", marks);
+  restart_args.push_back("--restart");
+  const Exit restarted = run(restart_args, root_, "restart");
+  ASSERT_EQ(restarted.code, 0) << restarted.err;
+  const std::vector<std::string> files = files_in(results());
+  ASSERT_EQ(files.size(), 2u);
+  const std::string aside = files[0] == "P02.location.csv" ? files[1] : files[0];
+  EXPECT_EQ(read_text(results() / aside), after);
+  EXPECT_EQ(trials_in(csv("P02")).size(), 14u);
+}
+
+TEST_F(LocationStudyRun, SigtermAndSigintStopBetweenMarksWithTheFileIntact) {
+  // Two quick trials, then trials that would last a minute: the signal comes during trial 3.
+  const fs::path marks = marks_file("slow.csv", 2, 0.3, 60.0);
+  const Child term = spawn(study_args("P03", marks), root_, "term");
+  ASSERT_TRUE(wait_for_rows(term, csv("P03"), 2)) << read_text(term.err);
+  const auto signalled = std::chrono::steady_clock::now();
+  ::kill(term.pid, SIGTERM);
+  const Exit termed = wait_for(term, signalled);
+  EXPECT_EQ(termed.code, 143) << termed.err;
+  EXPECT_LT(termed.seconds, 2.0);
+  const std::string text = read_text(csv("P03"));
+  EXPECT_EQ(text.back(), '\n');
+  std::vector<LocationTrial> rows = trials_in(csv("P03"));
+  ASSERT_EQ(rows.size(), 2u);
+  expect_planned(rows, "P03");
+  EXPECT_EQ(files_in(results()), (std::vector<std::string>{"P03.location.csv"}));
+
+  // The next run continues at trial 3; SIGINT there: 130, still two rows.
+  const Child interrupt = spawn(study_args("P03", marks), root_, "int");
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (read_text(interrupt.err).find("trial 3 of 14") == std::string::npos && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ::kill(interrupt.pid, SIGINT);
+  const Exit interrupted = wait_for(interrupt);
+  EXPECT_EQ(interrupted.code, 130) << interrupted.err;
+  EXPECT_NE(interrupted.err.find("continues at trial 3 of 14"), std::string::npos) << interrupted.err;
+  EXPECT_EQ(read_text(csv("P03")), text);
+}
+
+TEST_F(LocationStudyRun, AHidDeviceThatIsNotThereExitsOneAndWritesNothing) {
+  const std::vector<std::string> study{"--study", (kExample / "study.xml").string(), "--participant", "P04", "--results",
+                                       results().string()};
+  std::vector<std::string> any = study;
+  any.insert(any.end(), {"--device", "hid"});
+  const Exit e = run(any, root_);
+  EXPECT_EQ(e.code, 1) << e.err;
+  EXPECT_LT(e.seconds, 5.0);
+  EXPECT_EQ(e.err.rfind("vimg-force: error: no HID device", 0), 0u) << e.err;
+  std::vector<std::string> named = study;
+  named.insert(named.end(), {"--device", "hid:/dev/hidraw-none"});
+  const Exit n = run(named, root_);
+  EXPECT_EQ(n.code, 1);
+  EXPECT_NE(n.err.find("/dev/hidraw-none: cannot open /dev/hidraw-none"), std::string::npos) << n.err;
+  EXPECT_TRUE(files_in(results()).empty());
+}
+
+TEST_F(LocationStudyRun, BadInputExitsOneNamingFileAndLine) {
+  std::ofstream(root_ / "bad_marks.csv") << "trial,time_s\n1,0.5\n3,0.5\n";
+  const Exit marks = run(study_args("P05", root_ / "bad_marks.csv"), root_);
+  EXPECT_EQ(marks.code, 1);
+  EXPECT_EQ(marks.err.rfind((root_ / "bad_marks.csv").string() + ":3: error: trial 3 where trial 2 comes next", 0), 0u) << marks.err;
+
+  std::ofstream(root_ / "bad.xml") << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<locationStudy version=\"1\" seed=\"7\">\n"
+                                      "  <metaphor name=\"smoothness\"/>\n</locationStudy>\n";
+  std::vector<std::string> bad_study = study_args("P05", kExample / "marks.csv");
+  bad_study[1] = "bad.xml";
+  const Exit study = run(bad_study, root_);
+  EXPECT_EQ(study.code, 1);
+  EXPECT_EQ(study.err.rfind("bad.xml:3: error: ", 0), 0u) << study.err;
+
+  std::vector<std::string> no_folder = study_args("P05", kExample / "marks.csv");
+  no_folder[5] = (root_ / "missing").string();
+  const Exit folder = run(no_folder, root_);
+  EXPECT_EQ(folder.code, 1) << folder.err;
+  EXPECT_NE(folder.err.find("error"), std::string::npos);
+  EXPECT_FALSE(fs::exists(root_ / "missing"));
+
+  // The simulated participant cannot mark without --marks when nobody is at a terminal.
+  std::vector<std::string> unmarked = study_args("P05", kExample / "marks.csv");
+  unmarked.resize(unmarked.size() - 4);
+  unmarked.insert(unmarked.end(), {"--realtime-priority", "0"});
+  const Exit nobody = run(unmarked, root_);
+  EXPECT_EQ(nobody.code, 2) << nobody.err;
+  EXPECT_NE(nobody.err.find("nobody can mark"), std::string::npos) << nobody.err;
+  EXPECT_TRUE(files_in(results()).empty());
+}
+
+}  // namespace
+}  // namespace vimg
