@@ -60,6 +60,9 @@ class LiveStudy {
     if (flow_.screen() != StudyScreen::end) {
       std::printf("vimg-player: stopped before trial %zu of %zu; running again continues there\n", flow_.trial(),
                   flow_.total_trials());
+    } else {
+      std::printf("vimg-player: all %zu trials done; trial file %s\n", flow_.total_trials(),
+                  session_.log.path().string().c_str());
     }
     return cmdline::kExitOk;
   }

@@ -92,6 +92,9 @@ int run_scripted_study(StudySession& session, const std::vector<std::size_t>& ch
   if (flow.screen() != StudyScreen::end) {
     std::printf("vimg-player: stopped before trial %zu of %zu; running again continues there\n", flow.trial(),
                 flow.total_trials());
+  } else {
+    std::printf("vimg-player: all %zu trials done; trial file %s\n", flow.total_trials(),
+                session.log.path().string().c_str());
   }
   return cmdline::kExitOk;
 }

@@ -68,6 +68,7 @@ TEST_F(PlayerStudy, AScriptedRunOfTwoSetsOfFourImagesRecordsThePlanAndTheRespons
               std::string::npos)
         << r.out;
   }
+  EXPECT_NE(r.out.find("vimg-player: all 40 trials done"), std::string::npos) << r.out;
   // The output received every trial's rubbing: a complete WAV, not silent.
   const std::string wav = read_text(root_ / "out.wav");
   ASSERT_GT(wav.size(), 44u);
