@@ -17,11 +17,12 @@
 #include <vector>
 
 #include "storage/diagnostic.hpp"
+#include "storage/limits.hpp"
 
 namespace vimg::study {
 
 inline constexpr std::size_t kMaxJsonDepth = 64;
-inline constexpr std::size_t kMaxJsonValues = 200'000;
+inline constexpr std::size_t kMaxJsonValues = 200'000 / kLimitScale;  // scaled down in the fuzz build
 
 struct JsonValue {
   enum class Kind { null, boolean, number, string, array, object };
