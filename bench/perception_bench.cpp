@@ -1,0 +1,89 @@
+// What `vimg compare` costs in the perceptual model (docs/perception.md): 20 rendered signals of
+// 20 s at 8 kHz, each analysed once, then ST-SIM both ways and the perceptual similarity for every
+// pair, and the predicted confusion.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+#include "primitives/perception/perceptual_similarity.hpp"
+#include "primitives/perception/predicted_confusion.hpp"
+
+namespace vimg {
+namespace {
+
+constexpr double kRateHz = 8000.0;
+constexpr double kSeconds = 20.0;
+constexpr std::size_t kSignals = 20;
+
+// Signal i: textures of several frequencies and levels, touched 0.5 s of every 0.8 s, with DOT-like
+// bursts and a little noise, so that no two are alike and silent stretches occur.
+std::vector<double> make_signal(std::size_t i) {
+  std::vector<double> x(static_cast<std::size_t>(kSeconds * kRateHz));
+  const double texture_hz = 40.0 + 15.0 * static_cast<double>(i);
+  const double gain = 0.2 + 0.04 * static_cast<double>(i);
+  std::uint64_t state = 0x9E3779B97F4A7C15ULL * (i + 1);
+  for (std::size_t n = 0; n < x.size(); ++n) {
+    const double t = static_cast<double>(n) / kRateHz;
+    const double phase = std::fmod(t, 0.8);
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const double noise = 0.01 * (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5);
+    double v = phase < 0.5 ? gain * std::sin(2.0 * std::numbers::pi * texture_hz * t) : 0.0;
+    if (i % 3 == 0 && phase > 0.6 && phase < 0.63) v += std::sin(2.0 * std::numbers::pi * 175.0 * (phase - 0.6));
+    x[n] = v + noise;
+  }
+  return x;
+}
+
+const std::vector<std::vector<double>>& signals() {
+  static const std::vector<std::vector<double>> s = [] {
+    std::vector<std::vector<double>> all;
+    for (std::size_t i = 0; i < kSignals; ++i) all.push_back(make_signal(i));
+    return all;
+  }();
+  return s;
+}
+
+std::vector<PerceptualFeatures> analyse_all() {
+  std::vector<PerceptualFeatures> features;
+  for (const auto& s : signals()) features.push_back(analyse(s));
+  return features;
+}
+
+// analyse() of 20 signals of 20 s.
+void BM_AnalyseTwentySignals(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(analyse_all());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kSignals));
+}
+BENCHMARK(BM_AnalyseTwentySignals)->Unit(benchmark::kMillisecond);
+
+// stsim[i][j] for all 380 ordered pairs.
+void BM_StSimMatrixTwentySignals(benchmark::State& state) {
+  const auto features = analyse_all();
+  for (auto _ : state) benchmark::DoNotOptimize(stsim_matrix(features));
+}
+BENCHMARK(BM_StSimMatrixTwentySignals)->Unit(benchmark::kMillisecond);
+
+// perceptual_similarity for all 190 pairs (ST-SIM both ways over the felt blocks).
+void BM_SimilarityMatrixTwentySignals(benchmark::State& state) {
+  const auto features = analyse_all();
+  for (auto _ : state) benchmark::DoNotOptimize(similarity_matrix(features));
+}
+BENCHMARK(BM_SimilarityMatrixTwentySignals)->Unit(benchmark::kMillisecond);
+
+// Everything `vimg compare` asks of the model after rendering: analyse, both matrices, confusion.
+void BM_CompareTwentySignals(benchmark::State& state) {
+  for (auto _ : state) {
+    const auto features = analyse_all();
+    benchmark::DoNotOptimize(stsim_matrix(features));
+    const auto similarity = similarity_matrix(features);
+    benchmark::DoNotOptimize(likely_confused_pairs(predicted_confusion(similarity)));
+  }
+}
+BENCHMARK(BM_CompareTwentySignals)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace vimg
+BENCHMARK_MAIN();
