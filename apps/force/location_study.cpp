@@ -1,6 +1,7 @@
 #include "apps/force/location_study.hpp"
 
 #include <poll.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -107,11 +108,19 @@ Phase run_phase(StudyRun& run, MarkingPort& port, std::unique_ptr<HapticScene> s
   return phase;
 }
 
+// What a signal leaves: the device at rest, the trials done, where the next run begins.
+int stopped_by_signal(int signal_number, const TrialLog& log) {
+  std::fprintf(stderr, "vimg-force: %s: the device is at rest; %zu trials are in %s, the next run continues at trial %zu\n",
+               signal_number == SIGTERM ? "SIGTERM" : "SIGINT", log.completed(), log.path().c_str(), log.completed() + 1);
+  return exit_code_for_signal(signal_number);
+}
+
 // How a phase that did not end in a mark ends the program (the status line closed, the fault said).
-int stop_after(StudyRun& run, const Phase& phase) {
+int stop_after(StudyRun& run, const Phase& phase, const TrialLog& log) {
   run.status.finish();
   if (!phase.started) return cmdline::kExitFailure;
   if (phase.end.why == LoopRunEnd::Why::fault) error("device fault: " + phase.end.fault);
+  if (phase.end.why == LoopRunEnd::Why::signal) return stopped_by_signal(phase.end.signal_number, log);
   return phase.end.exit_code();
 }
 
@@ -187,7 +196,7 @@ int run_location_study(const ForceArgs& args, const std::atomic<int>& signal_rec
   }
 
   for (std::size_t k = log.completed() + 1; k <= total; ++k) {
-    if (const int s = signal_received.load()) return exit_code_for_signal(s);  // between trials: at rest
+    if (const int s = signal_received.load()) return stopped_by_signal(s, log);  // between trials: at rest
     const study::LocationTrialPlan& trial = plan[k - 1];
     const StudySet set = make_study_set(trial.data_seed);
 
@@ -209,7 +218,7 @@ int run_location_study(const ForceArgs& args, const std::atomic<int>& signal_rec
                         std::to_string(k) + " of " + total_text);
       MarkingPort ready(*device.device);
       const Phase wait = run_phase(run, ready, build_resting_scene(profile), {});
-      if (!wait.started || wait.end.why != LoopRunEnd::Why::finished) return stop_after(run, wait);
+      if (!wait.started || wait.end.why != LoopRunEnd::Why::finished) return stop_after(run, wait, log);
       port = std::make_unique<MarkingPort>(*device.device);
     }
 
@@ -218,7 +227,7 @@ int run_location_study(const ForceArgs& args, const std::atomic<int>& signal_rec
     if (!run.status.terminal()) std::fprintf(stderr, "%s\n", format_trial_status(k, total, trial.metaphor, 0.0).c_str());
     const Phase explore = run_phase(run, *port, build_location_trial_scene(set, trial.metaphor),
                                     [&](double clock_s) { return format_trial_status(k, total, trial.metaphor, clock_s); });
-    if (!port->marked()) return stop_after(run, explore);
+    if (!port->marked()) return stop_after(run, explore, log);
 
     // 3. The device is at rest; the row goes to disk, synced, before the next trial.
     const ProbeMark mark = port->mark();
@@ -236,7 +245,7 @@ int run_location_study(const ForceArgs& args, const std::atomic<int>& signal_rec
       error(log.path().string() + ": " + *failure);
       return cmdline::kExitFailure;
     }
-    if (explore.end.why != LoopRunEnd::Why::finished) return stop_after(run, explore);  // marked as the signal came
+    if (explore.end.why != LoopRunEnd::Why::finished) return stop_after(run, explore, log);  // marked as the signal came
   }
   std::fprintf(stderr, "vimg-force: participant %s has finished all %zu trials: %s\n", args.participant.c_str(), total,
                log.path().c_str());

@@ -14,6 +14,8 @@
 #include "apps/force/location_study_port.hpp"
 #include "apps/force/location_study_trial.hpp"
 #include "apps/force/status_line.hpp"
+#include "hal/force/hid_force_device.hpp"
+#include "hal/force/hid_force_emulator.hpp"
 
 namespace vimg::force_app {
 namespace {
@@ -169,6 +171,30 @@ TEST(MarkingPort, WithoutAScriptedPressTheSimulatedButtonStaysUp) {
   port.press();
   port.read(0.0, s);
   EXPECT_TRUE(port.marked());
+}
+
+TEST(MarkingPort, AHidDevicesButtonZeroMarksThroughTheProtocol) {
+  auto emulator = std::make_unique<HidForceEmulator>();
+  HidForceEmulator& hand = *emulator;
+  std::string error;
+  auto device = HidForceDevice::open(std::move(emulator), error);
+  ASSERT_TRUE(device) << error;
+  MarkingPort port(*device);
+  ProbeSample s;
+  auto cycle = [&](double t, double x_m, std::uint8_t buttons) {
+    hand.set_position({x_m, -0.01, 0.02});
+    hand.set_buttons(buttons);
+    hand.emit_state();
+    return port.read(t, s);
+  };
+  ASSERT_TRUE(cycle(0.001, 0.010, 0b01));  // held from the press that began the trial
+  ASSERT_TRUE(cycle(0.002, 0.011, 0b10));  // button 1 alone
+  EXPECT_FALSE(port.marked());
+  ASSERT_TRUE(cycle(0.003, 0.012, 0b11));
+  ASSERT_TRUE(port.marked());
+  EXPECT_NEAR(port.mark().position_m.x, 0.012, 1e-6);  // the protocol's micrometres
+  EXPECT_NEAR(port.mark().position_m.z, 0.02, 1e-6);
+  EXPECT_EQ(port.mark().time_s, 0.003);
 }
 
 // --- a trial's scene, target and row ---

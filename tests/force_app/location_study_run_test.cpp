@@ -51,11 +51,12 @@ struct Exit {
   double seconds = 0.0;
 };
 
-// Starts vimg-force in `dir` with stdin from /dev/null (never a terminal), stdout and stderr captured.
+// Starts vimg-force in `dir` with stdin from /dev/null (never a terminal), stdout and stderr captured in
+// `dir` (the test's own folder, emptied at its start, so no earlier run's output is ever read).
 Child spawn(const std::vector<std::string>& args, const fs::path& dir, const std::string& capture_name) {
   Child c;
-  c.out = dir.parent_path() / (capture_name + ".stdout");
-  c.err = dir.parent_path() / (capture_name + ".stderr");
+  c.out = dir / (capture_name + ".stdout");
+  c.err = dir / (capture_name + ".stderr");
   std::vector<std::string> argv_text{kForce.string()};
   argv_text.insert(argv_text.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -79,11 +80,22 @@ Child spawn(const std::vector<std::string>& args, const fs::path& dir, const std
   return c;
 }
 
+// Waits for the program's end; one that is still running after two minutes is killed and reported
+// as exit code -2, so a program that ignores its end fails the test instead of hanging it.
 Exit wait_for(const Child& c, std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now()) {
   Exit e;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   int status = 0;
-  if (c.pid > 0 && ::waitpid(c.pid, &status, 0) == c.pid) {
+  pid_t ended = 0;
+  while (c.pid > 0 && (ended = ::waitpid(c.pid, &status, WNOHANG)) == 0 && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  if (ended == c.pid) {
     e.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  } else if (ended == 0) {
+    ::kill(c.pid, SIGKILL);
+    ::waitpid(c.pid, &status, 0);
+    e.code = -2;
   }
   e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   e.out = read_text(c.out);
@@ -109,8 +121,10 @@ bool wait_for_rows(const Child& c, const fs::path& csv, std::size_t rows) {
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (std::chrono::steady_clock::now() < give_up) {
     if (complete_rows(csv) >= rows) return true;
-    int status = 0;
-    if (::waitpid(c.pid, &status, WNOHANG) == c.pid) return false;
+    siginfo_t info{};
+    if (::waitid(P_PID, static_cast<id_t>(c.pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == c.pid) {
+      return false;  // ended (left for wait_for to collect)
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   return false;
@@ -328,6 +342,8 @@ TEST_F(LocationStudyRun, SigtermAndSigintStopBetweenMarksWithTheFileIntact) {
   ::kill(term.pid, SIGTERM);
   const Exit termed = wait_for(term, signalled);
   EXPECT_EQ(termed.code, 143) << termed.err;
+  // Handled, not merely killed: the loop was stopped (zero force) and the program says where it stands.
+  EXPECT_NE(termed.err.find("vimg-force: SIGTERM: the device is at rest; 2 trials are in "), std::string::npos) << termed.err;
   EXPECT_LT(termed.seconds, 2.0);
   const std::string text = read_text(csv("P03"));
   EXPECT_EQ(text.back(), '\n');
@@ -339,13 +355,18 @@ TEST_F(LocationStudyRun, SigtermAndSigintStopBetweenMarksWithTheFileIntact) {
   // The next run continues at trial 3; SIGINT there: 130, still two rows.
   const Child interrupt = spawn(study_args("P03", marks), root_, "int");
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (read_text(interrupt.err).find("trial 3 of 14") == std::string::npos && std::chrono::steady_clock::now() < give_up) {
+  // The trial under way: its first status line (not "continues at trial 3 of 14").
+  while (read_text(interrupt.err).find("\ntrial 3 of 14  ") == std::string::npos && std::chrono::steady_clock::now() < give_up) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   ::kill(interrupt.pid, SIGINT);
   const Exit interrupted = wait_for(interrupt);
   EXPECT_EQ(interrupted.code, 130) << interrupted.err;
+  EXPECT_NE(interrupted.err.find("vimg-force: SIGINT: the device is at rest; 2 trials are in "), std::string::npos)
+      << interrupted.err;
+  EXPECT_NE(interrupted.err.find("the next run continues at trial 3"), std::string::npos) << interrupted.err;
   EXPECT_NE(interrupted.err.find("continues at trial 3 of 14"), std::string::npos) << interrupted.err;
+  EXPECT_EQ(interrupted.err.find("marked"), std::string::npos) << interrupted.err;
   EXPECT_EQ(read_text(csv("P03")), text);
 }
 
