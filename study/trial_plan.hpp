@@ -1,9 +1,15 @@
 #pragma once
 // One seeded trial order for both studies (pure functions). The order is reproducible from the
-// study's seed and the participant's ID on every platform: the participant seed is FNV-1a (64-bit)
-// of the ID mixed into the study seed with splitmix64, and shuffles are Fisher-Yates driven by the
-// project's own generator (splitmix64, with an unbiased bounded draw), never std::*_distribution,
-// whose output differs between standard libraries.
+// study's seed and the participant's ID on every platform, never from std::*_distribution (whose
+// output differs between standard libraries):
+//   mix64(z)            splitmix64's output function (a bijection of 64-bit words)
+//   participant_seed    mix64(mix64(study_seed + G) ^ FNV-1a-64(ID bytes)), G = 0x9E3779B97F4A7C15
+//   generator           splitmix64: state += G, output mix64(state); a draw below n rejects outputs
+//                       under 2^64 mod n (no modulo bias)
+//   shuffled_indices    Fisher-Yates from the top: for i = n..2, swap [i-1] with [draw below i]
+//   part seeds          derive(seed, purpose, index) = mix64(mix64(seed ^ mix64(purpose * G)) + index * G):
+//                       purpose 1 a set's shuffle (index: the set), 2 the metaphors' order, 3 the
+//                       interleaved shuffle, 4 a trial's data seed (index: the trial number, from 1)
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

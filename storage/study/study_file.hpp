@@ -1,8 +1,9 @@
 #pragma once
 // Study files (XML, docs/format.md "Matching study file" and "Location study file"): what a study
 // runner needs before its first trial. Read like every XML file of the project (the structure pass
-// before tinyxml2, its wording for malformed XML, unknown elements and attributes named at their
-// line, the limits of storage/limits.hpp); every problem is `FILE:LINE: error: ...`.
+// before tinyxml2, its wording for malformed XML, the limits of storage/limits.hpp); every problem
+// is `FILE:LINE: error: ...`. Unlike an image's, an unknown element or attribute is an error: a
+// study must run exactly as its file says.
 //
 //   <matchingStudy version="1" seed="2024" repetitions="5" trainingMinutes="3">
 //     <maskingNoise device="USB Audio" level="0.2"/>

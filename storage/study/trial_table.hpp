@@ -60,8 +60,12 @@ struct TrialTableResult {
 };
 
 // A whole trial file of at most kMaxTrialFileBytes and kMaxTrialRows rows, checked line by line:
-// the header, the cell count, every number and name, `correct` against presented == chosen, and
-// trial numbers increasing per participant. Every problem is `FILE:LINE: error: ...`.
+// the header, the cell count, every number and name, `correct` against presented == chosen,
+// error_mm against the mark's x-z distance from the target (to 1e-9 relative), and trial numbers
+// increasing per participant (a file may hold several participants; gaps are allowed). Every
+// problem is `FILE:LINE: error: ...`. A last line without its line break (a crash mid-write) counts
+// when it is a whole valid row and is otherwise left out with a warning; an empty file or a header
+// cut short gives no rows and a warning. So a trial file can be read at any instant.
 TrialTableResult<MatchingTrial> read_matching_trials(const std::filesystem::path& csv);
 TrialTableResult<LocationTrial> read_location_trials(const std::filesystem::path& csv);
 
