@@ -69,9 +69,11 @@ int run_report(const ReportArgs& a) {
 
 void add_study_command(CLI::App& vimg, int& exit_code) {
   CLI::App* study = vimg.add_subcommand("study", "the matching test and the location study: report their trials (docs/studies.md)");
+  study->set_version_flag("--version", std::string(cmdline::version()), "print the version and exit");
   study->require_subcommand(1);
   CLI::App* report = study->add_subcommand(
       "report", "tables, statistics and figures of the trial files of the matching test and of the location study");
+  report->set_version_flag("--version", std::string(cmdline::version()), "print the version and exit");
   auto a = std::make_shared<ReportArgs>();
   report->add_option("TRIALS", a->trials,
                      "trial files (CSV, one per participant, as vimg-player --study and vimg-force --study write them); "

@@ -209,6 +209,9 @@ TEST_F(ReportCommand, UsageErrorsAndHelp) {
   const test::CommandRun help = run("--help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.out.find("docs/studies.md"), std::string::npos) << help.out;
+  const test::CommandRun version = run("--version");
+  EXPECT_EQ(version.exit_code, 0) << version.out;
+  EXPECT_EQ(version.out.rfind("vimg ", 0), 0u) << version.out;
   EXPECT_FALSE(fs::exists(dir_ / "r.txt"));
 }
 
