@@ -59,6 +59,11 @@ void EditorApp::frame() {
   ImGui::Separator();
   if (auto path = library_.draw(playing)) request(PendingAction::open_file, *path);
   ImGui::End();
+  if (auto images = library_.take_compare_request()) {
+    const ActuatorProfile& profile = playback_.feel().profile();
+    compare_.start(std::move(*images), {profile.name.empty() ? "ideal" : profile.name, playback_.feel().path().string(),
+                                        profile.response});
+  }
 
   canvas_.draw(kToolsWidth, top, canvas_w, canvas_h);
   if (playback_.on()) playback_.draw_scope(kToolsWidth, top + canvas_h, canvas_w, scope_h);
@@ -66,6 +71,7 @@ void EditorApp::frame() {
   properties_.draw(kToolsWidth + canvas_w, top, kPropertiesWidth, props_h);
   problems_.draw(kToolsWidth + canvas_w, top + props_h, kPropertiesWidth, H - top - kStatusHeight - props_h,
                  session_.editor(), session_.load_diagnostics(), layout_);
+  compare_.draw(kToolsWidth + 20.0f, top + 20.0f, std::min(640.0f, canvas_w - 40.0f), std::min(420.0f, canvas_h - 40.0f));
   draw_status_bar(W, H);
 
   draw_dialogs();

@@ -46,7 +46,8 @@ EditorApp::EditorApp(EditorOptions options)
       playback_(options_, notices_, layout_, config_dir() / "recent-folders.txt"),
       canvas_(session_.editor(), playback_, notices_, layout_),
       properties_(session_.editor(), notices_, layout_),
-      library_(options_.library_dir),
+      library_(options_.library_dir, layout_),
+      compare_(layout_),
       chooser_(layout_, config_dir() / "recent-folders.txt") {
   properties_.set_feel(&playback_.feel());
 }

@@ -7,6 +7,7 @@
 //   PropertiesPanel, ProblemList   the inspector
 //   Playback                       playing mode, gesture recording and the oscilloscope
 //   LibraryPanel                   the example and user images
+//   CompareWindow                  the predicted confusion of images chosen in the library
 // editor_app.cpp: window, loop and keys; app_frame.cpp: the frame, menu and status bar;
 // app_dialogs.cpp: the dialogs and the file actions they lead to.
 #include <SDL.h>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "editor/canvas_view.hpp"
+#include "editor/compare_window.hpp"
 #include "editor/core/document_session.hpp"
 #include "editor/core/layout_log.hpp"
 #include "editor/editor_options.hpp"
@@ -74,6 +76,7 @@ class EditorApp {
   PropertiesPanel properties_;
   ProblemList problems_;
   LibraryPanel library_;
+  CompareWindow compare_;
   FileChooser chooser_;
 
   SDL_Window* window_ = nullptr;
