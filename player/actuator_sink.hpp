@@ -12,6 +12,7 @@
 // allocation, no lock, no throw (a block longer than the buffer is equalized piece by piece); close()
 // and the accessors on the control thread.
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -35,6 +36,8 @@ class ActuatorSink final : public DriveSink {
   // False when the chain is the identity (e.g. equalizing an ideal, voice-coil or ERM actuator, or
   // the drive of any): the drive passes unchanged.
   bool changes_drive() const { return chain_ && !chain_->is_identity(); }
+  // Samples of this stream the equalizer clamped to the drive limit (since open()).
+  std::uint64_t clamped_samples() const { return chain_ ? chain_->clamped_samples() : 0; }
 
  private:
   DriveSink& output_;

@@ -31,6 +31,8 @@ class ActuatorChain {
     equalizer_.reset();
     model_.reset();
   }
+  // Samples the equalizer clamped to the drive limit since construction or reset().
+  std::uint64_t clamped_samples() const noexcept { return equalize_ ? equalizer_.clamped_samples() : 0; }
   // True when process() returns its input unchanged.
   bool is_identity() const { return !equalize_ && !model_output_; }
 

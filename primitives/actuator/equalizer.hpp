@@ -10,9 +10,11 @@
 //   ideal, voice_coil: identity (the band is already flat).
 //   erm: identity: a linear filter on the drive cannot reshape a motor's speed lag.
 // The output is clamped to [-1, 1] (a filter whose gain is at most 0 dB can still overshoot for a
-// moment).
+// moment: full-scale square waves do); clamped_samples() counts the samples it clamped.
 //
 // Threads: a value type; process() never allocates, locks or throws (one thread per instance).
+#include <cstdint>
+
 #include "primitives/actuator/biquad.hpp"
 #include "primitives/actuator/response_params.hpp"
 
@@ -24,12 +26,22 @@ class Equalizer {
  public:
   Equalizer(const ResponseParams& params, double sample_rate_hz);
 
+  // The filter alone: what process() clamps (tests bound it).
+  double filter(double drive) noexcept { return identity_ ? drive : stage_.process(drive); }
   double process(double drive) noexcept {
-    if (identity_) return drive;
-    const double y = stage_.process(drive);
-    return y > 1.0 ? 1.0 : (y < -1.0 ? -1.0 : y);
+    const double y = filter(drive);
+    if (y > 1.0 || y < -1.0) {
+      ++clamped_samples_;
+      return y > 1.0 ? 1.0 : -1.0;
+    }
+    return y;
   }
-  void reset() noexcept { stage_.reset(); }
+  void reset() noexcept {
+    stage_.reset();
+    clamped_samples_ = 0;
+  }
+  // Samples that process() clamped since construction or reset().
+  std::uint64_t clamped_samples() const noexcept { return clamped_samples_; }
   // 20 log10 |E| at frequency_hz; at most 0 dB.
   double response_db(double frequency_hz) const;
   bool is_identity() const { return identity_; }
@@ -38,6 +50,7 @@ class Equalizer {
   double sample_rate_hz_;
   Biquad stage_;
   bool identity_ = true;
+  std::uint64_t clamped_samples_ = 0;
 };
 
 }  // namespace vimg

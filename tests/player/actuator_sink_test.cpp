@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "../actuator/model_params.hpp"
@@ -48,14 +50,37 @@ TEST(ActuatorSink, TheOutputGetsTheEqualizerOfTheDriveAsAnOfflineRenderDoes) {
     ASSERT_EQ(memory.samples().size(), drive.size());
     for (std::size_t i = 0; i < drive.size(); ++i) ASSERT_EQ(memory.samples()[i], expected[i]) << i;
     EXPECT_TRUE(memory.closed());
+    EXPECT_EQ(sink.clamped_samples(), 0u);
   }
-  // It does change the drive (the resonance is attenuated), and never beyond the drive limit.
+  // It does change the drive (the resonance is attenuated), and stays far inside the drive limit
+  // without the clamp: the equalizer's filter alone peaks at 0.51.
+  Equalizer filter(lra(), kRate);
   double diff = 0.0;
+  double peak = 0.0;
   for (std::size_t i = 0; i < drive.size(); ++i) {
     diff += std::abs(expected[i] - drive[i]);
-    EXPECT_LE(std::abs(expected[i]), 1.0f);
+    peak = std::max(peak, std::fabs(filter.filter(drive[i])));
   }
   EXPECT_GT(diff, 100.0);
+  EXPECT_LE(peak, 0.51);
+}
+
+TEST(ActuatorSink, CountsTheSamplesTheEqualizerClamped) {
+  // Full-scale square waves at the resonance overshoot beyond the drive limit before the clamp.
+  std::vector<float> drive(8000);
+  for (std::size_t i = 0; i < drive.size(); ++i) drive[i] = (i / 23) % 2 == 0 ? 1.0f : -1.0f;
+  Equalizer filter(lra(), kRate);
+  std::uint64_t beyond = 0;
+  for (const float d : drive) beyond += std::fabs(filter.filter(d)) > 1.0 ? 1u : 0u;
+  ASSERT_GT(beyond, 0u);
+  MemorySink memory;
+  ActuatorSink sink(memory, lra(), OutputSignal::drive, true);
+  sink.open(kRate);
+  write_blocks(sink, drive, {160});
+  EXPECT_EQ(sink.clamped_samples(), beyond);
+  for (const float v : memory.samples()) ASSERT_LE(std::fabs(v), 1.0f);
+  sink.open(kRate);  // a new stream starts counting again
+  EXPECT_EQ(sink.clamped_samples(), 0u);
 }
 
 TEST(ActuatorSink, ABlockLongerThanTheBufferKeepsItsTimes) {
