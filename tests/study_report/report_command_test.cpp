@@ -215,6 +215,54 @@ TEST_F(ReportCommand, UsageErrorsAndHelp) {
   EXPECT_FALSE(fs::exists(dir_ / "r.txt"));
 }
 
+// The primitives paper's study as 20 trial files (one per participant, 40 trials each): the report
+// gives its Tables 1 and 2 and Table 6's accuracies exactly. Errors as in Tables 1-2: set
+// complexity s3 -> s4 once (P04) and s4 -> s3 once (P05); set same s2 -> s4 and s4 -> s2 once each
+// by P01, P02 and P03.
+TEST_F(ReportCommand, ThePapersTablesFromTwentyTrialFiles) {
+  std::string files;
+  for (int p = 1; p <= 20; ++p) {
+    const std::string id = std::string(p < 10 ? "P0" : "P") + std::to_string(p);
+    std::string text = kMatchingHeader;
+    int trial = 0;
+    for (const std::string set : {"complexity", "same"}) {
+      for (int rep = 0; rep < 5; ++rep) {
+        for (int image = 1; image <= 4; ++image) {
+          const std::string presented = "s" + std::to_string(image);
+          std::string chosen = presented;
+          if (rep == 2 && set == "complexity" && p == 4 && image == 3) chosen = "s4";
+          if (rep == 2 && set == "complexity" && p == 5 && image == 4) chosen = "s3";
+          if (rep == 4 && set == "same" && p <= 3 && image == 2) chosen = "s4";
+          if (rep == 4 && set == "same" && p <= 3 && image == 4) chosen = "s2";
+          text += matching_row(id, set, ++trial, presented, chosen);
+        }
+      }
+    }
+    write(id + ".trials.csv", text);
+    files += " " + id + ".trials.csv";
+  }
+  const Json j = report_json(files);
+  const double table1[4][4] = {{100, 0, 0, 0}, {0, 100, 0, 0}, {0, 0, 99, 1}, {0, 0, 1, 99}};
+  const double table2[4][4] = {{100, 0, 0, 0}, {0, 97, 0, 3}, {0, 0, 100, 0}, {0, 3, 0, 97}};
+  const auto& sets = j["sets"].array();
+  ASSERT_EQ(sets.size(), 2u);
+  for (int i = 0; i < 4; ++i) {
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_EQ(sets[0]["comparison"].array()[i].array()[k].number(), table1[i][k]) << i << "," << k;
+      EXPECT_EQ(sets[1]["comparison"].array()[i].array()[k].number(), table2[i][k]) << i << "," << k;
+    }
+  }
+  EXPECT_EQ(sets[0]["accuracy"].number(), 0.995);  // Table 6
+  EXPECT_EQ(sets[1]["accuracy"].number(), 0.985);
+  const Json& s2 = sets[1]["per_image"].array()[1];  // Table 5
+  EXPECT_EQ(s2["tp"].number(), 97);
+  EXPECT_EQ(s2["fn"].number(), 3);
+  EXPECT_EQ(s2["fp"].number(), 3);
+  EXPECT_EQ(s2["tn"].number(), 297);
+  EXPECT_EQ(sets[0]["participants"].array().size(), 20u);
+  EXPECT_EQ(sets[1]["participants"].array()[0]["accuracy"].number(), 0.9);
+}
+
 TEST_F(ReportCommand, PredictedConfusionSitsBesideTheMeasured) {
   write("c.json",
         "{\"images\": [\"x/a.vimg\", \"x/b.vimg\", \"x/c.vimg\"],\n"
