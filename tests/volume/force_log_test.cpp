@@ -61,8 +61,12 @@ TEST(ForceLog, ARowIsTimePositionInMillimetresForceAndFlagNames) {
 
 struct LoggedRun {
   std::uint64_t cycles = 0;
+  std::uint64_t dropped = 0;
+  std::uint64_t written_while_running = 0;  // rows the writer had written when the loop stopped
   std::optional<std::string> error;
 };
+
+constexpr std::size_t kLogRing = 256;  // much smaller than the run: the writer must keep up
 
 LoggedRun run_logged_loop(const fs::path& log, bool finish) {
   SimulatedForceDevice sim(std::vector<HandPathPoint>{{0.0, Vec3{}}, {1.0, Vec3{0.05, 0.0, 0.0}}});
@@ -70,7 +74,7 @@ LoggedRun run_logged_loop(const fs::path& log, bool finish) {
   c.safety.gate_force_N = 1e9;
   c.safety.stale_limit_cycles = 1000000;
   c.safety.overrun_limit_cycles = 1000000;
-  c.log_capacity_rows = 256;  // small: the writer must keep up
+  c.log_capacity_rows = kLogRing;
   HapticLoop loop(sim, c);
   loop.submit_scene(std::make_unique<HapticScene>(
       DeviceProfile{}, std::vector<std::shared_ptr<const void>>{},
@@ -81,9 +85,17 @@ LoggedRun run_logged_loop(const fs::path& log, bool finish) {
   EXPECT_TRUE(writer.ok()) << writer.error();
   writer.start();
   EXPECT_TRUE(loop.start());
-  for (int i = 0; i < 5000 && loop.cycles() < 600; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  // Until the loop has run 600 cycles, over twice the ring, and the writer has drained most of them
+  // (a writer that drained only at the end would never get there: the wait gives up after 30 s).
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while ((loop.cycles() < 600 || writer.rows_written() + kLogRing < loop.cycles()) && loop.running() &&
+         std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
   loop.stop();
-  run.cycles = loop.cycles() - loop.log_rows_dropped();
+  run.cycles = loop.cycles();
+  run.dropped = loop.log_rows_dropped();
+  run.written_while_running = writer.rows_written();
   EXPECT_FALSE(fs::exists(log));  // nothing appears before the log is complete
   if (finish) run.error = writer.finish();
   return run;
@@ -99,7 +111,11 @@ TEST(ForceLogWriter, WritesEveryRowAtomicallyEndingWithTheZeroSentAtStop) {
   EXPECT_EQ(lines[0] + "\n", kForceLogHeader);
   EXPECT_EQ(lines.back(), "");  // ends with a newline
   const std::size_t rows = lines.size() - 2;
+  // Every cycle is in the log: none dropped although the ring holds less than a third of the run.
+  EXPECT_EQ(run.dropped, 0u);
   EXPECT_EQ(rows, run.cycles);
+  EXPECT_GE(run.cycles, 600u);
+  EXPECT_GE(run.written_while_running + kLogRing, run.cycles);
   double last_time = -1.0;
   for (std::size_t i = 1; i <= rows; ++i) {
     const std::vector<std::string> fields = split(lines[i], ',');
