@@ -100,7 +100,25 @@ TEST(DriveEnvelope, ASineGivesItsAmplitudeAndFrequency) {
   }
   const HapticClip clip = env.clip();
   EXPECT_DOUBLE_EQ(clip.duration_s, 1.0);
-  EXPECT_NEAR(clip.frequency.back().value, clip_frequency_from_hz(f), 1e-3);
+  // docs/export.md: log(175 / 40) / log(500 / 40) = 0.584 (175 Hz measured within 1 %: +-0.004).
+  EXPECT_NEAR(clip.frequency.back().value, 0.584, 0.005);
+}
+
+TEST(DriveEnvelope, FrequenciesAreNormalisedAsTheDocsDerive) {
+  EXPECT_NEAR(clip_frequency_from_hz(175.0), 0.5844, 1e-4);
+  EXPECT_EQ(clip_frequency_from_hz(40.0), 0.0);
+  EXPECT_NEAR(clip_frequency_from_hz(500.0), 1.0, 1e-12);
+  EXPECT_NEAR(clip_frequency_from_hz(141.42135623730951), 0.5, 1e-9);  // the geometric middle
+  EXPECT_EQ(clip_frequency_from_hz(20.0), 0.0);   // clamped
+  EXPECT_EQ(clip_frequency_from_hz(2000.0), 1.0);
+}
+
+// The value of the AHAP event parameter `id` (-1 when absent).
+double event_parameter(const Json& event, const std::string& id) {
+  for (const Json& p : event["EventParameters"].array()) {
+    if (p["ParameterID"].string() == id) return p["ParameterValue"].number();
+  }
+  return -1.0;
 }
 
 TEST(DriveEnvelope, AnOnsetIsATransientWithABreakpointAtItsTime) {
@@ -111,10 +129,38 @@ TEST(DriveEnvelope, AnOnsetIsATransientWithABreakpointAtItsTime) {
   env.add(s);
   const HapticClip clip = env.clip();
   ASSERT_EQ(clip.transients.size(), 1u);
-  EXPECT_NEAR(clip.transients[0].time_s, 0.25, 0.006);
-  EXPECT_NEAR(clip.transients[0].frequency, clip_frequency_from_hz(175.0), 0.02);
+  const ClipTransient& click = clip.transients[0];
+  EXPECT_NEAR(click.time_s, 0.25, 0.006);
+  // Its amplitude is its window's, sqrt(2) RMS of 0.875 periods of a 0.9 sine: 0.94 (within 10 %
+  // of 0.9), its frequency the next window's, 175 Hz: 0.584.
+  EXPECT_NEAR(click.amplitude, 0.94, 0.02);
+  EXPECT_NEAR(click.frequency, 0.584, 0.005);
   EXPECT_TRUE(std::any_of(clip.amplitude.begin(), clip.amplitude.end(),
-                          [&](const ClipBreakpoint& p) { return p.time_s == clip.transients[0].time_s; }));
+                          [&](const ClipBreakpoint& p) { return p.time_s == click.time_s; }));
+
+  // AHAP: a HapticTransient at its time, intensity sqrt(amplitude), sharpness sqrt(frequency).
+  int transients = 0;
+  const Json ahap = JsonReader::parse(write_ahap(clip));
+  for (const Json& item : ahap["Pattern"].array()) {
+    if (!item.has("Event") || item["Event"]["EventType"].string() != "HapticTransient") continue;
+    ++transients;
+    EXPECT_NEAR(item["Event"]["Time"].number(), click.time_s, 1e-9);
+    EXPECT_NEAR(event_parameter(item["Event"], "HapticIntensity"), std::sqrt(click.amplitude), 1e-9);
+    EXPECT_NEAR(event_parameter(item["Event"], "HapticSharpness"), std::sqrt(click.frequency), 1e-9);
+    EXPECT_NEAR(event_parameter(item["Event"], "HapticSharpness"), std::sqrt(0.584), 0.005);
+  }
+  EXPECT_EQ(transients, 1);
+  // .haptic: the emphasis of the amplitude breakpoint at its time, linear values; no other emphasis.
+  int emphasised = 0;
+  const Json haptic = JsonReader::parse(write_meta_haptic(clip));
+  for (const Json& p : haptic["signals"]["continuous"]["envelopes"]["amplitude"].array()) {
+    if (!p.has("emphasis")) continue;
+    ++emphasised;
+    EXPECT_NEAR(p["time"].number(), click.time_s, 1e-9);
+    EXPECT_NEAR(p["emphasis"]["amplitude"].number(), click.amplitude, 1e-9);
+    EXPECT_NEAR(p["emphasis"]["frequency"].number(), click.frequency, 1e-9);
+  }
+  EXPECT_EQ(emphasised, 1);
 }
 
 void expect_ascending_in_unit(const Json::Array& points, const char* time_key, const char* value_key) {
@@ -133,7 +179,8 @@ std::vector<ClipBreakpoint> check_ahap(const Json& ahap, double duration_s) {
   EXPECT_TRUE(ahap["Metadata"].is_object());
   double covered = 0.0;
   std::vector<ClipBreakpoint> intensity;
-  double previous_curve_end = -1.0;
+  ClipBreakpoint last_intensity{-1.0, 0.0};  // the previous curve's last point
+  ClipBreakpoint last_sharpness{-1.0, 0.0};
   for (const Json& item : ahap["Pattern"].array()) {
     if (item.has("Event")) {
       const Json& e = item["Event"];
@@ -159,15 +206,19 @@ std::vector<ClipBreakpoint> check_ahap(const Json& ahap, double duration_s) {
     EXPECT_LE(points.size(), kAhapMaxCurvePoints);
     EXPECT_EQ(points.front()["Time"].number(), 0.0);  // times relative to the curve
     expect_ascending_in_unit(points, "Time", "ParameterValue");
-    if (id == "HapticIntensityControl") {
-      EXPECT_GE(c["Time"].number(), previous_curve_end);  // curves in time order, each starting where the last ended
-      for (const Json& p : points) {
-        const double v = p["ParameterValue"].number();
-        const double t = c["Time"].number() + p["Time"].number();
-        if (intensity.empty() || t > intensity.back().time_s) intensity.push_back({t, v * v});  // intensity = sqrt(amplitude)
-      }
-      previous_curve_end = intensity.back().time_s;
+    // Each curve after the first starts with the last point of the one before (same time, same
+    // value), so that the value is continuous; that shared point is taken once.
+    ClipBreakpoint& last = id == "HapticIntensityControl" ? last_intensity : last_sharpness;
+    const double curve_s = c["Time"].number();
+    if (last.time_s >= 0.0) {
+      EXPECT_NEAR(curve_s, last.time_s, 1e-9) << id;
+      EXPECT_EQ(points.front()["ParameterValue"].number(), last.value) << id << " at " << curve_s;
     }
+    for (std::size_t k = last.time_s >= 0.0 ? 1 : 0; k < points.size(); ++k) {
+      const double v = points[k]["ParameterValue"].number();
+      if (id == "HapticIntensityControl") intensity.push_back({curve_s + points[k]["Time"].number(), v * v});  // intensity = sqrt(amplitude)
+    }
+    last = {curve_s + points.back()["Time"].number(), points.back()["ParameterValue"].number()};
   }
   EXPECT_NEAR(covered, duration_s, 1e-9);
   return intensity;
@@ -209,6 +260,26 @@ TEST(ClipWriters, LongClipsSplitIntoThirtySecondEventsAndSixteenPointCurves) {
   const Json haptic = JsonReader::parse(write_meta_haptic(clip));
   EXPECT_EQ(check_haptic(haptic).size(), clip.amplitude.size());
   EXPECT_EQ(haptic["metadata"]["source"].string(), clip.metadata.source);
+  // The transient: a HapticTransient of intensity sqrt(0.9), sharpness sqrt(0.5); in .haptic the
+  // emphasis {0.9, 0.5} of the amplitude breakpoint at 1 s, and no other.
+  int ahap_transients = 0;
+  for (const Json& item : ahap["Pattern"].array()) {
+    if (!item.has("Event") || item["Event"]["EventType"].string() != "HapticTransient") continue;
+    ++ahap_transients;
+    EXPECT_EQ(item["Event"]["Time"].number(), 1.0);
+    EXPECT_NEAR(event_parameter(item["Event"], "HapticIntensity"), std::sqrt(0.9), 1e-9);
+    EXPECT_NEAR(event_parameter(item["Event"], "HapticSharpness"), std::sqrt(0.5), 1e-9);
+  }
+  EXPECT_EQ(ahap_transients, 1);
+  int emphasised = 0;
+  for (const Json& p : haptic["signals"]["continuous"]["envelopes"]["amplitude"].array()) {
+    if (!p.has("emphasis")) continue;
+    ++emphasised;
+    EXPECT_EQ(p["time"].number(), 1.0);
+    EXPECT_EQ(p["emphasis"]["amplitude"].number(), 0.9);
+    EXPECT_EQ(p["emphasis"]["frequency"].number(), 0.5);
+  }
+  EXPECT_EQ(emphasised, 1);
 }
 
 // The correlation of the clip's amplitude with the drive's own RMS envelope over 10 ms windows.
