@@ -10,6 +10,7 @@
 #include <string>
 
 #include "study/report_json_reader.hpp"
+#include "study/report_predicted.hpp"
 #include "tests/cli/run_command.hpp"
 
 namespace vimg {
@@ -125,6 +126,11 @@ TEST_F(CompareCommand, TheJsonReportHasTheMatricesAndTheWarnings) {
   EXPECT_EQ(root.find("warnings")->items[0].text, "A.vimg ~ B.vimg: likely confused (p = 0.50)");
   EXPECT_EQ(root.find("exploration")->find("kind")->text, "standard");
   EXPECT_EQ(root.find("actuator")->find("name")->text, "ideal");
+  // What `vimg study report --predicted` reads of it.
+  const study::PredictedLoadResult predicted = study::load_predicted_confusion(dir_ / "r.json");
+  ASSERT_TRUE(predicted.predicted) << (predicted.diagnostics.empty() ? "" : predicted.diagnostics[0].to_string());
+  EXPECT_EQ(predicted.predicted->stems, (std::vector<std::string>{"A", "B", "dot"}));
+  EXPECT_NEAR(predicted.predicted->matrix[0][1], 0.5, 1e-3);
 }
 
 TEST_F(CompareCommand, TheHtmlReportIsSelfContainedWithHeatMaps) {
