@@ -3,6 +3,7 @@
 // study/compare.hpp does the work, study/compare_output.hpp writes the report).
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -62,6 +63,11 @@ int run_compare_command(const CompareArgs& a) {
   if (!study::is_compare_output(a.out))
     return usage_error(kProgram, "--out must end in .json, .html or .csv: '" + a.out + "'");
   if (a.inputs.size() < 2) return usage_error(kProgram, "give at least two images (or rendered signals) to compare");
+  for (const std::string& in : a.inputs) {
+    std::error_code ec;
+    if (in == a.out || std::filesystem::equivalent(in, a.out, ec))
+      return usage_error(kProgram, "--out names an input: '" + a.out + "'");
+  }
   if (a.inputs.size() > kMaxCompareInputs)
     return usage_error(kProgram, std::to_string(a.inputs.size()) + " inputs (limit " + std::to_string(kMaxCompareInputs) + ")");
 

@@ -70,6 +70,12 @@ TEST_F(CompareCommand, UsageErrorsExitTwo) {
   EXPECT_EQ(vimg("compare " + kData + "dot.vimg " + kData + "line.vimg").exit_code, 2);  // no --out
   EXPECT_EQ(vimg("compare " + kData + "dot.vimg " + kData + "line.vimg --out r.json --frobnicate").exit_code, 2);
   EXPECT_EQ(files_in_dir(), 0u);
+  // A render CSV given as input is never overwritten by the report.
+  write("s.csv", "time_s,drive\n0,0.5\n");
+  const auto same = vimg("compare s.csv " + kData + "dot.vimg --out ./s.csv");
+  EXPECT_EQ(same.exit_code, 2);
+  EXPECT_NE(same.out.find("--out names an input"), std::string::npos) << same.out;
+  EXPECT_EQ(read_text(dir_ / "s.csv"), "time_s,drive\n0,0.5\n");
 }
 
 TEST_F(CompareCommand, BadInputsExitOneWithFileAndLine) {
