@@ -59,9 +59,12 @@ TEST(RecentFiles, ADamagedOrHostileStoreGivesOnlyPlausiblePaths) {
                            std::string(5000, 'x') + "\n/ok/b.png";
   EXPECT_EQ(parse_recent_files(text, 10), (std::vector<std::string>{"/ok/a.vimg", "/ok/b.png"}));
   EXPECT_EQ(parse_recent_files(text, 1), (std::vector<std::string>{"/ok/a.vimg"}));
-  // A store far over the read limit costs no more than the limit.
+  // A store far over the read limit costs no more than the limit: a valid entry after the limit
+  // (past empty lines, which are skipped, not refused) is never read.
   const auto store = std::filesystem::path(VIMG_BINARY_DIR) / "editor_test_recent_huge.txt";
-  { std::ofstream(store) << "/first.vimg\n" << std::string(4 * kMaxRecentFilesBytes, 'y'); }
+  { std::ofstream(store) << "/first.vimg\n" << std::string(4 * kMaxRecentFilesBytes, '\n') << "/after-the-limit.vimg\n"; }
+  EXPECT_EQ(parse_recent_files("/first.vimg\n" + std::string(4 * kMaxRecentFilesBytes, '\n') + "/after-the-limit.vimg\n", 10),
+            (std::vector<std::string>{"/first.vimg", "/after-the-limit.vimg"}));  // the parser alone takes it
   RecentFiles recent(store, 10);
   EXPECT_EQ(recent.paths(), (std::vector<std::string>{"/first.vimg"}));
   std::filesystem::remove(store);
