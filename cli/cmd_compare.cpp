@@ -13,6 +13,7 @@
 #include "hal/actuator_profile.hpp"
 #include "hal/rest_on_exit.hpp"
 #include "player/gesture.hpp"
+#include "storage/atomic_file.hpp"
 #include "storage/limits.hpp"
 #include "study/compare.hpp"
 #include "study/compare_output.hpp"
@@ -93,7 +94,15 @@ int run_compare_command(const CompareArgs& a) {
   if (result.interrupted || rest_requested()) return interrupted(a.out);
   if (!result.ok()) return kExitFailure;
   for (const std::string& w : result.warnings) std::fprintf(stderr, "%s: warning: %s\n", kProgram, w.c_str());
-  if (auto error = study::write_compare_output(a.out, result)) {
+  // Written atomically; a signal that arrives before the rename still leaves nothing.
+  AtomicFileWriter file(a.out);
+  file.write(study::compare_output_text(a.out, result));
+  if (rest_requested()) {
+    file.abort();
+    return interrupted(a.out);
+  }
+  const std::optional<std::string> error = file.ok() ? file.commit() : std::optional(file.error());
+  if (error) {
     std::fprintf(stderr, "%s: %s\n", kProgram, error->c_str());
     return kExitFailure;
   }

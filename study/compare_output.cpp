@@ -236,10 +236,13 @@ bool is_compare_output(const std::filesystem::path& path) {
   return ext == ".json" || ext == ".html" || ext == ".htm" || ext == ".csv";
 }
 
-std::optional<std::string> write_compare_output(const std::filesystem::path& path, const CompareResult& result) {
+std::string compare_output_text(const std::filesystem::path& path, const CompareResult& result) {
   const std::string ext = lower_extension(path);
-  const std::string text = ext == ".json" ? compare_json(result) : ext == ".csv" ? compare_csv(result) : compare_html(result);
-  return write_file_atomically(path, text);
+  return ext == ".json" ? compare_json(result) : ext == ".csv" ? compare_csv(result) : compare_html(result);
+}
+
+std::optional<std::string> write_compare_output(const std::filesystem::path& path, const CompareResult& result) {
+  return write_file_atomically(path, compare_output_text(path, result));
 }
 
 }  // namespace vimg::study

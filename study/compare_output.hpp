@@ -27,6 +27,9 @@ std::string compare_csv(const CompareResult& result);
 // Whether `vimg compare` writes this extension (.json, .html, .htm, .csv; any case).
 bool is_compare_output(const std::filesystem::path& path);
 
+// The report's text for `path`'s extension.
+std::string compare_output_text(const std::filesystem::path& path, const CompareResult& result);
+
 // Writes the report for `path`'s extension; the error naming the path, or nothing.
 std::optional<std::string> write_compare_output(const std::filesystem::path& path, const CompareResult& result);
 
