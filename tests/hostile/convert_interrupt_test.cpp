@@ -2,7 +2,8 @@
 // leaves no temporary (AtomicFileWriter's registry, emptied by the handler vimg's main installs)
 // and no output. The signal is sent the moment the temporary appears in the folder (inotify), so
 // it lands during the write and fsync of a large output. A PNG output is also interrupted while
-// its threads draw and compress, before any file exists.
+// its threads draw and compress, before any file exists: the signal is sent once a second thread
+// of the process runs (/proc/PID/task), never after a fixed time.
 #include <gtest/gtest.h>
 #include <poll.h>
 #include <signal.h>
@@ -10,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -39,14 +41,25 @@ void write_big_image(const fs::path& path) {
 }
 
 struct Outcome {
-  bool signalled_mid_write = false;  // the temporary existed when the signal was sent
+  bool signalled_mid_write = false;  // the state was seen when the signal was sent
   int status = 0;
 };
 
-// Converts in.vimg to `out_name` and sends `signal_number` when the temporary of `out_name` appears,
-// or, with `after_ms` >= 0, that many milliseconds after the start (mid-encoding).
+// The threads of process `pid` (/proc/PID/task), 0 once it has gone.
+int threads_of(pid_t pid) {
+  std::error_code ec;
+  int n = 0;
+  for (fs::directory_iterator it("/proc/" + std::to_string(pid) + "/task", ec), end; !ec && it != end; it.increment(ec)) ++n;
+  return n;
+}
+
+enum class SignalWhen { temporary_appears, threads_work };
+
+// Converts in.vimg to `out_name` and sends `signal_number` when the program shows the state: the
+// temporary of `out_name` appears in the folder (inotify), or more than one of its threads runs
+// (a PNG's drawing and compression, before any file exists).
 Outcome convert_and_signal(const fs::path& dir, int signal_number, const std::string& out_name = "out.vimg",
-                           int after_ms = -1) {
+                           SignalWhen when = SignalWhen::temporary_appears) {
   Outcome outcome;
   const int watch_fd = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
   EXPECT_GE(watch_fd, 0);
@@ -57,8 +70,10 @@ Outcome convert_and_signal(const fs::path& dir, int signal_number, const std::st
     execl(kVimg.c_str(), "vimg", "convert", in.c_str(), out.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
-  if (after_ms >= 0) {
-    usleep(static_cast<useconds_t>(after_ms) * 1000);
+  if (when == SignalWhen::threads_work) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (threads_of(pid) < 2 && std::chrono::steady_clock::now() < give_up) usleep(50);
+    outcome.signalled_mid_write = threads_of(pid) >= 2;  // here: while its threads worked
     kill(pid, signal_number);
     close(watch_fd);
     waitpid(pid, &outcome.status, 0);
@@ -109,8 +124,9 @@ TEST(ConvertInterrupt, ASignalWhilePngThreadsWorkOrWriteLeavesNothingAndExits130
     ASSERT_TRUE(WIFEXITED(writing.status)) << "signal " << signal_number << " killed vimg without its handler";
     EXPECT_EQ(WEXITSTATUS(writing.status), code);
     EXPECT_EQ(names_in(dir), std::vector<std::string>{"in.vimg"}) << "signal " << signal_number;
-    // While reading, drawing and compressing (the whole convert takes about a second).
-    const Outcome encoding = convert_and_signal(dir, signal_number, "out.png", 400);
+    // While its threads draw and compress.
+    const Outcome encoding = convert_and_signal(dir, signal_number, "out.png", SignalWhen::threads_work);
+    ASSERT_TRUE(encoding.signalled_mid_write) << "no second thread ever ran";
     ASSERT_TRUE(WIFEXITED(encoding.status)) << "signal " << signal_number << " killed vimg without its handler";
     EXPECT_EQ(WEXITSTATUS(encoding.status), code);
     EXPECT_EQ(names_in(dir), std::vector<std::string>{"in.vimg"}) << "signal " << signal_number;
