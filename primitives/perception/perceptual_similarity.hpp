@@ -1,7 +1,7 @@
 #pragma once
 // Perceptual similarity of two vibrotactile signals, symmetric, in [0, 1] (docs/perception.md):
 // ST-SIM for the structure (both directions), sensation level for what ST-SIM leaves out.
-//   structure:  S = clamp((ST-SIM(a|b) + ST-SIM(b|a)) / 2, 0, 1), ST-SIM taken over the blocks
+//   structure:  S = min(clamp(ST-SIM(a|b), 0, 1), clamp(ST-SIM(b|a), 0, 1)), ST-SIM taken over the blocks
 //               where at least one of the two is felt (blocks silent to both carry nothing; the
 //               plain ST-SIM counts them as dissimilar); 1 when the signals are equal or no block
 //               is felt or the signals are shorter than one block;
