@@ -74,7 +74,9 @@ std::string heat_map_svg(const HeatMap& map) {
   const double left = 30.0 + label_px + 8.0;
   const double top = 40.0 + label_px * 0.72 + 8.0;
   const double grid = kCellPx * static_cast<double>(n);
-  const double width = std::max(left + grid + 12.0, 20.0 + kCharPx * static_cast<double>(map.title.size()));
+  // The column labels run up and to the right at 45 degrees from their cells: the last one reaches
+  // label_px * cos 45 beyond the grid.
+  const double width = std::max(left + grid + label_px * 0.72 + 12.0, 20.0 + kCharPx * static_cast<double>(map.title.size()));
   const double height = top + grid + 12.0;
   std::string s = "<svg role=\"img\" width=\"" + px(width) + "\" height=\"" + px(height) +
                   "\" viewBox=\"0 0 " + px(width) + " " + px(height) + "\" font-family=\"sans-serif\" font-size=\"12\">\n";
@@ -92,11 +94,14 @@ std::string heat_map_svg(const HeatMap& map) {
     s += text_element(left - 6.0, y + kCellPx / 2.0 + 4.0, labels[i], "text-anchor=\"end\"") + "\n";
     for (std::size_t j = 0; j < n; ++j) {
       const double x = left + kCellPx * static_cast<double>(j);
-      const std::optional<double> shade = i < map.shade.size() && j < map.shade[i].size() ? map.shade[i][j] : std::nullopt;
+      // A plain value and a flag (not a copied std::optional): g++ 12 at -O3 reports a false
+      // -Wmaybe-uninitialized on the optional's copy.
+      const bool has_shade = i < map.shade.size() && j < map.shade[i].size() && map.shade[i][j].has_value();
+      const double shade = has_shade ? *map.shade[i][j] : 0.0;
       s += "<rect x=\"" + px(x) + "\" y=\"" + px(y) + "\" width=\"" + px(kCellPx) + "\" height=\"" + px(kCellPx) + "\" fill=\"" +
-           (shade ? shade_colour(*shade) : std::string("#dddddd")) + "\" stroke=\"#888888\" stroke-width=\"0.5\"/>\n";
+           (has_shade ? shade_colour(shade) : std::string("#dddddd")) + "\" stroke=\"#888888\" stroke-width=\"0.5\"/>\n";
       const std::string cell = i < map.cells.size() && j < map.cells[i].size() ? map.cells[i][j] : "";
-      const std::string colour = shade && *shade > 0.5 ? "#ffffff" : "#000000";
+      const std::string colour = has_shade && shade > 0.5 ? "#ffffff" : "#000000";
       s += text_element(x + kCellPx / 2.0, y + kCellPx / 2.0 + 4.0, cell, "text-anchor=\"middle\" fill=\"" + colour + "\"") + "\n";
     }
   }
