@@ -28,6 +28,7 @@ int run_convert(const std::string& in_file, const std::string& out_file, double 
   SaveOptions options;
   options.scale_px_per_mm = scale_px_per_mm;
   const std::filesystem::path in(in_file);
+  options.new_file_mode = NewFileMode::of(in);  // a new output takes the input's permission bits, as cp's copy
   const std::filesystem::path out(out_file);
   if (!has_extension(out, ".vimg") && !has_extension(out, ".png")) {
     std::fprintf(stderr, "vimg convert: %s: the output must end in .vimg or .png\n", out.c_str());

@@ -53,7 +53,8 @@ int run_gesture(GestureArgs& a) {
     for (const auto& e : check.errors) std::fprintf(stderr, "%s\n", e.c_str());
     return kExitFailure;
   }
-  if (const auto error = write_file_atomically(out, text)) {
+  // Merged into a gesture file: a new output takes that file's permission bits, as cp's copy.
+  if (const auto error = write_file_atomically(out, text, merge.empty() ? NewFileMode{} : NewFileMode::of(merge))) {
     std::fprintf(stderr, "vimg gesture: %s\n", error->c_str());
     return kExitFailure;
   }
@@ -96,7 +97,8 @@ int run_import(const ImportArgs& a) {
     for (const auto& e : check.errors) std::fprintf(stderr, "%s\n", e.c_str());
     return kExitFailure;
   }
-  if (const auto error = write_file_atomically(a.out, text)) {
+  // A new output takes the recording's permission bits, as cp's copy.
+  if (const auto error = write_file_atomically(a.out, text, NewFileMode::of(a.trace))) {
     std::fprintf(stderr, "vimg gesture import: %s\n", error->c_str());
     return kExitFailure;
   }

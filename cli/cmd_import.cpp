@@ -44,7 +44,9 @@ int run_import(const ImportArgs& a) {
                  a.input.c_str());
   }
   if (rest_requested()) return interrupted();
-  if (const auto error = save_image_file(*r.image, a.out)) {
+  SaveOptions save;
+  save.new_file_mode = NewFileMode::of(a.input);  // a new output takes the input's permission bits, as cp's copy
+  if (const auto error = save_image_file(*r.image, a.out, save)) {
     std::fprintf(stderr, "vimg import: %s\n", error->c_str());
     return kExitFailure;
   }

@@ -90,6 +90,7 @@ int run_render(const RenderArgs& a) {
   } else {
     sink = std::make_unique<CsvSink>(a.out, a.signal);
   }
+  sink->set_new_file_mode(NewFileMode::of(a.image));  // a new output takes the image's permission bits
   OfflineRenderOptions options;
   options.sample_rate_hz = static_cast<double>(a.rate_hz);
   const OutputSignal signal = a.signal == "acceleration" ? OutputSignal::acceleration : OutputSignal::drive;
@@ -103,6 +104,7 @@ int run_render(const RenderArgs& a) {
   if (!a.register_trace.empty()) {
     try {
       trace = std::make_unique<Drv2605lTraceSink>(*sink, profile, a.register_trace);
+      trace->set_new_file_mode(NewFileMode::of(a.image));
     } catch (const std::invalid_argument& e) {
       std::fprintf(stderr, "vimg render: %s: %s\n", a.actuator.c_str(), e.what());
       return kExitFailure;

@@ -49,7 +49,8 @@ int probe(const std::string& scene_path, const std::string& path_file, const std
   auto scene = build_haptic_scene(*loaded.loaded);
   const DeviceProfile& device = loaded.loaded->scene.device;
   const auto rows = render_probe_path(*scene, *path.path, device.rate_hz, device.max_force_N);
-  if (auto error = write_file_atomically(out, write_probe_forces_csv(rows))) {
+  // A new output takes the scene's permission bits (what it renders), as cp's copy.
+  if (auto error = write_file_atomically(out, write_probe_forces_csv(rows), NewFileMode::of(scene_path))) {
     std::fprintf(stderr, "vimg volume: %s\n", error->c_str());
     return kExitFailure;
   }

@@ -44,7 +44,7 @@ void Drv2605lTraceSink::close() {
   driver_->close();
   std::ostringstream text;
   chip_.write_trace_csv(text);
-  if (auto error = write_file_atomically(trace_path_, text.str())) error_ = "cannot write the register trace: " + *error;
+  if (auto error = write_file_atomically(trace_path_, text.str(), new_file_mode_)) error_ = "cannot write the register trace: " + *error;
 }
 
 }  // namespace vimg

@@ -14,6 +14,7 @@
 #include "hal/drv2605l_emulator.hpp"
 #include "hal/emulated_i2c_bus.hpp"
 #include "player/drive_sink.hpp"
+#include "storage/atomic_file.hpp"
 
 namespace vimg {
 
@@ -27,10 +28,13 @@ class Drv2605lTraceSink final : public DriveSink {
   void close() override;
 
   const std::optional<std::string>& error() const { return error_; }  // "FILE: problem"
+  // The permission bits of the trace file if it is new (NewFileMode::of the image it is made from).
+  void set_new_file_mode(NewFileMode mode) { new_file_mode_ = mode; }
 
  private:
   DriveSink& next_;
   std::filesystem::path trace_path_;
+  NewFileMode new_file_mode_;
   FakeClock clock_;
   EmulatedI2cBus bus_{"/dev/i2c-emulated"};
   Drv2605lEmulator chip_;

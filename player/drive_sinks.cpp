@@ -39,7 +39,7 @@ void FileSink::open(double sample_rate_hz) {
   samples_written_ = 0;
   done_ = false;
   error_.reset();
-  file_ = std::make_unique<AtomicFileWriter>(target_);
+  file_ = std::make_unique<AtomicFileWriter>(target_, new_file_mode_);
   if (!file_->ok()) {
     error_ = file_->error();
     return;

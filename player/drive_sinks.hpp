@@ -41,6 +41,9 @@ class FileSink : public DriveSink {
  public:
   explicit FileSink(std::filesystem::path target);
   ~FileSink() override;
+  // The permission bits the file gets if it is new (before open(); NewFileMode::of the input it is
+  // rendered from, so a private image gives a private render).
+  void set_new_file_mode(NewFileMode mode) { new_file_mode_ = mode; }
   void open(double sample_rate_hz) override;
   void write(std::span<const float> drive, double block_start_time_s) override;
   // Completes the file and renames it over the target. After an error, removes the temporary.
@@ -65,6 +68,7 @@ class FileSink : public DriveSink {
   bool flush();
 
   std::filesystem::path target_;
+  NewFileMode new_file_mode_;
   std::unique_ptr<AtomicFileWriter> file_;
   std::string buffer_;
   std::optional<std::string> error_;

@@ -104,7 +104,13 @@ void exit_on_interrupt_removing_temporaries() {
   ::sigaction(SIGTERM, &action, nullptr);
 }
 
-AtomicFileWriter::AtomicFileWriter(std::filesystem::path path) : path_(std::move(path)) {
+NewFileMode NewFileMode::of(const std::filesystem::path& made_from) {
+  struct stat source {};
+  if (::stat(made_from.c_str(), &source) != 0) return {};
+  return {static_cast<unsigned>(source.st_mode) & 0777u};
+}
+
+AtomicFileWriter::AtomicFileWriter(std::filesystem::path path, NewFileMode new_file_mode) : path_(std::move(path)) {
   if (path_.filename().empty() || path_.filename() == "." || path_.filename() == "..") {
     error_ = path_.string() + ": not a file name";
     return;
@@ -112,7 +118,9 @@ AtomicFileWriter::AtomicFileWriter(std::filesystem::path path) : path_(std::move
   temp_ = temporary_path_for(path_);
   {
     const BlockInterrupts blocked;
-    fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    // The umask applies to the mode given here, as it does to cp's copies.
+    fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
+                 static_cast<mode_t>(new_file_mode.bits & 0777u));
     if (fd_ >= 0) registry_slot_ = register_temporary(temp_);
   }
   if (fd_ < 0) {
@@ -207,8 +215,9 @@ void AtomicFileWriter::abort() noexcept {
   }
 }
 
-std::optional<std::string> write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
-  AtomicFileWriter writer(path);
+std::optional<std::string> write_file_atomically(const std::filesystem::path& path, std::string_view bytes,
+                                                 NewFileMode new_file_mode) {
+  AtomicFileWriter writer(path, new_file_mode);
   writer.write(bytes);
   return writer.commit();
 }

@@ -3,8 +3,10 @@
 // the complete new one, never a torn file, and nobody else's file is ever touched.
 //   1. a temporary file is created next to the target with O_CREAT|O_EXCL|O_NOFOLLOW (a planted
 //      file or symlink of that name makes the create fail; it is never followed or reused);
-//   2. it takes the target's permission bits when the target exists (a 0600 file stays 0600),
-//      otherwise 0666 less the umask;
+//   2. it takes the target's permission bits when the target exists (a 0600 file stays 0600);
+//      a new file gets 0666 less the umask, or, when it is made from another file (a convert, an
+//      import, a render), that file's read, write and execute bits less the umask, as cp gives a
+//      copy (NewFileMode::of: a private 0600 input never becomes a 0644 output);
 //   3. the bytes are written (at once, or streamed by AtomicFileWriter), fsync'ed, the file is
 //      renamed over the target, and the folder is fsync'ed so that the rename is durable;
 //   4. on any error, and when a writer is destroyed without commit(), the temporary is removed;
@@ -36,13 +38,23 @@ void remove_pending_temporaries() noexcept;
 // handler and calls remove_pending_temporaries() from it, or finishes its writers itself.
 void exit_on_interrupt_removing_temporaries();
 
+// The permission bits a new file is created with (the umask still applies; a target that exists
+// keeps its own bits whatever this says).
+struct NewFileMode {
+  unsigned bits = 0666;
+  // The read, write and execute bits of the file an output is made from (no set-user-ID, set-group-ID
+  // or sticky bit, as cp without -p); 0666 when it cannot be read.
+  static NewFileMode of(const std::filesystem::path& made_from);
+};
+
 // Returns an error message naming the path, or nothing on success.
-std::optional<std::string> write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+std::optional<std::string> write_file_atomically(const std::filesystem::path& path, std::string_view bytes,
+                                                 NewFileMode new_file_mode = {});
 
 class AtomicFileWriter {
  public:
   // Creates the temporary file. On failure, error() says why and every other call fails.
-  explicit AtomicFileWriter(std::filesystem::path path);
+  explicit AtomicFileWriter(std::filesystem::path path, NewFileMode new_file_mode = {});
   ~AtomicFileWriter();  // removes the temporary unless committed
   AtomicFileWriter(const AtomicFileWriter&) = delete;
   AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;

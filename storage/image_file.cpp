@@ -78,11 +78,11 @@ std::optional<std::string> save_image_file(const Image& image, const std::filesy
   if (!has_png_extension(path)) {
     const std::string xml = write_image_xml(image);
     if (auto error = saved_text_error(xml)) return path.string() + ": " + *error;
-    return write_file_atomically(path, xml);
+    return write_file_atomically(path, xml, options.new_file_mode);
   }
   const PngPieces png = encode_image_png(image, options.scale_px_per_mm, options.threads);
   if (!png.error.empty()) return path.string() + ": " + png.error;
-  AtomicFileWriter writer(path);
+  AtomicFileWriter writer(path, options.new_file_mode);
   for (const std::string& piece : png.pieces) writer.write(piece);
   return writer.commit();
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "primitives/image.hpp"
+#include "storage/atomic_file.hpp"
 #include "storage/diagnostic.hpp"
 #include "storage/parameter_table.hpp"
 #include "storage/png_codec.hpp"
@@ -56,6 +57,7 @@ std::optional<std::string> saved_text_error(std::string_view xml);
 struct SaveOptions {
   double scale_px_per_mm = 10.0;  // PNG only
   int threads = 0;                // PNG only: threads drawing and compressing; <= 0: one per core
+  NewFileMode new_file_mode = {};  // a new file's permission bits (NewFileMode::of the input it is made from)
 };
 
 // The PNG of an image (spec section 2) at `scale_px_per_mm`: the picture drawn and compressed band
