@@ -1,6 +1,7 @@
 #include "storage/volume/nrrd_header.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdlib>
 #include <sstream>
 #include <utility>
@@ -94,6 +95,23 @@ void check_quoted_lists(const NrrdHeaderScan& scan, DiagnosticList& list, bool& 
     } else if (f.name == "space units" && space_dim > 0 && n != space_dim) {
       list.error(f.line, "field 'space units': " + std::to_string(n) + " units for a space of " + std::to_string(space_dim) +
                              " dimensions");
+      failed = true;
+    }
+  }
+}
+
+// NRRD allows one negative byte skip, -1: the data are the last bytes of the file. teem reads any
+// negative value as -1; pynrrd refuses them. Refused here at its line.
+void check_byte_skip(const NrrdHeaderScan& scan, DiagnosticList& list, bool& failed) {
+  for (const auto& f : scan.fields) {
+    if (squeeze(f.name) != "byteskip") continue;
+    long long skip = 0;
+    const char* end = f.value.data() + f.value.size();
+    const auto [at, problem] = std::from_chars(f.value.data(), end, skip);
+    const bool negative = !f.value.empty() && f.value[0] == '-';
+    if (negative && (problem != std::errc{} || at != end || skip != -1)) {
+      list.error(f.line, "field " + in_quotes(f.name) + ": " + escape_input(f.value) +
+                             " is not allowed: -1 (the data are the last bytes of the file) is the only negative byte skip");
       failed = true;
     }
   }
@@ -209,6 +227,7 @@ std::optional<NrrdHeaderScan> scan_nrrd_header(std::string_view bytes, Diagnosti
   }
   check_order(scan, list, failed);
   check_quoted_lists(scan, list, failed);
+  check_byte_skip(scan, list, failed);
   if (failed) return std::nullopt;
   scan.teem_header += "\n";
   return scan;

@@ -93,6 +93,14 @@ TEST(Nrrd, HeaderErrorsNameFileAndLine) {
       {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 1 1\nencoding: raw\n", "bad.nrrd:5: error: the header does not end"},
       {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 100000 100000 100000\nencoding: raw\n\n", "bad.nrrd:4: error: the volume has more than"},
       {"NRRD0004\ntype: uchar\ndimension: 3\nline skip: 2\nsizes: 1 1 1\nencoding: raw\n\n\x01", "bad.nrrd:8: error: hit EOF skipping line 1 of 2"},
+      // -1 (the data are the file's last bytes) is the one negative byte skip NRRD allows; teem
+      // read -5 as -1 (pynrrd refuses it).
+      {"NRRD0004\ntype: uchar\ndimension: 3\nbyte skip: -5\nsizes: 1 1 1\nencoding: raw\n\n\x01",
+       "bad.nrrd:4: error: field 'byte skip': -5 is not allowed: -1 (the data are the last bytes of the file) is the only negative byte skip"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 1 1\nbyteskip: -2\nencoding: raw\n\n\x01",
+       "bad.nrrd:5: error: field 'byteskip': -2 is not allowed"},
+      {"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 1 1\nbyte skip: -9223372036854775808\nencoding: raw\n\n\x01",
+       "bad.nrrd:5: error: field 'byte skip': -9223372036854775808 is not allowed"},
       // Lists teem would leak memory on (found by the fuzzer): refused before teem reads them.
       {"NRRD0004\ntype: uchar\ndimension: 3\nspace dimension: 3\nspace units: \"mm\n" + ok_tail, "bad.nrrd:5: error: field 'space units': expected a list of \"quoted\" strings"},
       {"NRRD0004\ntype: uchar\ndimension: 3\nspace: RAS\nspace units: \"mm\" \"mm\" \"mm\" \"mm\"\n" + ok_tail, "bad.nrrd:5: error: field 'space units': 4 units for a space of 3 dimensions"},
