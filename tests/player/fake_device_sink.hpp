@@ -1,5 +1,6 @@
 #pragma once
 // A test double for a sound card: a DriveSink that paces the stream with its own clock.
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -29,6 +30,8 @@ class FakeDeviceSink final : public DriveSink {
     for (float v : drive) nonzero = nonzero || v != 0.0f;
     blocks.push_back({block_start_time_s, drive.size(), monotonic_s(), nonzero});
     samples.insert(samples.end(), drive.begin(), drive.end());
+    last_nonzero_.store(nonzero, std::memory_order_release);
+    blocks_written_.fetch_add(1, std::memory_order_release);
     written_ += drive.size();
     // Returns when the device has taken all but queue_samples of what was written.
     if (written_ > queue_samples_) {
@@ -47,6 +50,9 @@ class FakeDeviceSink final : public DriveSink {
   };
   std::vector<float> samples;
   std::vector<Block> blocks;
+  // For another thread while the renderer writes (blocks and samples are the writer's until it stops).
+  bool last_block_driven() const { return last_nonzero_.load(std::memory_order_acquire); }
+  std::uint64_t blocks_written() const { return blocks_written_.load(std::memory_order_acquire); }
 
  private:
   double speed_;
@@ -54,6 +60,8 @@ class FakeDeviceSink final : public DriveSink {
   double rate_ = 0.0;
   std::int64_t open_ns_ = 0;
   std::uint64_t written_ = 0;
+  std::atomic<bool> last_nonzero_{false};
+  std::atomic<std::uint64_t> blocks_written_{0};
 };
 
 }  // namespace vimg::test
