@@ -7,8 +7,9 @@
 #include <map>
 #include <system_error>
 
-#include "storage/text_trim.hpp"
+#include "storage/csv_lines.hpp"
 #include "storage/diagnostic.hpp"
+#include "storage/text_trim.hpp"
 #include "storage/limits.hpp"
 #include "storage/read_file.hpp"
 
@@ -94,35 +95,24 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
   };
   std::map<int, FingerState> fingers;
   Gesture gesture;
-  bool header_seen = false;
-  int line_no = 0;
-  std::size_t rows = 0;
   bool have_time = false;
   double min_time_s = 0.0, max_time_s = 0.0;  // over every row so far: the gesture's span
-  std::size_t pos = 0;
-  while (pos < text.size()) {
-    std::size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view line = trim_blanks(text.substr(pos, end - pos));
-    pos = end + 1;
-    ++line_no;
-    if (result.errors.size() >= 50) break;
-    if (line.empty() || line.front() == '#') continue;
-    const auto f = split_fields(line);
-    if (!header_seen) {
-      const bool is_header = f.size() == 6 && f[0] == "time_s" && f[1] == "finger" && f[2] == "x_mm" &&
-                             f[3] == "y_mm" && f[4] == "pressure" && f[5] == "phase";
-      if (!is_header) {
-        error(line_no, "expected the header row 'time_s,finger,x_mm,y_mm,pressure,phase'");
-        return result;
-      }
-      header_seen = true;
-      continue;
-    }
-    if (++rows > kMaxGestureRows) {
-      error(line_no, "more than " + std::to_string(kMaxGestureRows) + " rows (limit " + std::to_string(kMaxGestureRows) + ")");
+  CsvLines lines(text, {.trim_blanks = true, .max_rows = kMaxGestureRows});
+  const std::optional<std::string_view> header = lines.header();
+  if (header) {
+    const auto f = split_fields(*header);
+    const bool is_header = f.size() == 6 && f[0] == "time_s" && f[1] == "finger" && f[2] == "x_mm" &&
+                           f[3] == "y_mm" && f[4] == "pressure" && f[5] == "phase";
+    if (!is_header) {
+      error(lines.line(), "expected the header row 'time_s,finger,x_mm,y_mm,pressure,phase'");
       return result;
     }
+  }
+  while (result.errors.size() < 50) {
+    const std::optional<std::string_view> line = lines.row();
+    if (!line) break;
+    const int line_no = lines.line();
+    const auto f = split_fields(*line);
     if (f.size() != 6) {
       error(line_no, "expected 6 fields (time_s,finger,x_mm,y_mm,pressure,phase), found " +
                          std::to_string(f.size()));
@@ -210,8 +200,12 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
       if (phase == 2) st.down = false;
     }
   }
-  if (!header_seen && result.errors.empty()) {
-    error(std::max(line_no, 1), "missing the header row 'time_s,finger,x_mm,y_mm,pressure,phase'");
+  if (lines.past_row_limit()) {
+    error(lines.line(), lines.row_limit_problem());
+    return result;
+  }
+  if (!header && result.errors.empty()) {
+    error(std::max(lines.line(), 1), "missing the header row 'time_s,finger,x_mm,y_mm,pressure,phase'");
   }
   if (!result.errors.empty()) return result;
   // Fingers still down at the end lift at their last row (nothing to add: the stroke ends there).

@@ -1,5 +1,6 @@
 #include "apps/force/location_study_marks.hpp"
 
+#include "storage/csv_lines.hpp"
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 #include "storage/read_file.hpp"
@@ -27,22 +28,14 @@ MarkTimesResult parse_mark_times(std::string_view text, const std::string& file_
   std::vector<double> times;
   DiagnosticList list(file_name);
   const std::string total_text = std::to_string(total_trials);
-  int line = 0;
-  bool header_seen = false;
-  std::size_t pos = 0;
-  while (pos < text.size() && !list.has_errors()) {
-    std::size_t eol = text.find('\n', pos);
-    if (eol == std::string_view::npos) eol = text.size();
-    std::string_view row = text.substr(pos, eol - pos);
-    pos = eol + 1;
-    ++line;
-    if (!row.empty() && row.back() == '\r') row.remove_suffix(1);
-    if (row.empty() || row.front() == '#') continue;
-    if (!header_seen) {
-      header_seen = true;
-      if (row != kHeader) list.error(line, "the header must be 'trial,time_s'");
-      continue;
-    }
+  CsvLines lines(text);
+  const std::optional<std::string_view> header = lines.header();
+  if (header && *header != kHeader) list.error(lines.line(), "the header must be 'trial,time_s'");
+  while (!list.has_errors()) {
+    const std::optional<std::string_view> next = lines.row();
+    if (!next) break;
+    const int line = lines.line();
+    const std::string_view row = *next;
     const std::size_t comma = row.find(',');
     if (comma == std::string_view::npos || row.find(',', comma + 1) != std::string_view::npos) {
       list.error(line, "expected 2 columns (trial,time_s)");
@@ -77,10 +70,10 @@ MarkTimesResult parse_mark_times(std::string_view text, const std::string& file_
     times.push_back(time_s);
   }
   if (!list.has_errors()) {
-    if (!header_seen) {
+    if (!header) {
       list.error(0, "empty file, expected the header 'trial,time_s'");
     } else if (times.size() < total_trials) {
-      list.error(line, "no time for trial " + std::to_string(times.size() + 1) + ": the study has " + total_text +
+      list.error(lines.line(), "no time for trial " + std::to_string(times.size() + 1) + ": the study has " + total_text +
                            " trials and each needs a row");
     }
   }

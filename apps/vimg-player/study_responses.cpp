@@ -2,6 +2,7 @@
 
 #include <charconv>
 
+#include "storage/csv_lines.hpp"
 #include "storage/limits.hpp"
 #include "storage/read_file.hpp"
 #include "storage/text_trim.hpp"
@@ -45,24 +46,20 @@ ResponsesResult parse_responses(std::string_view text, const std::string& file_n
   const std::size_t total = plan.size();
   std::vector<std::size_t> chosen(total, 0);
   std::vector<int> answered_at(total, 0);  // the line that answered each trial, 0: none yet
-  bool header_seen = false;
-  int line_number = 0;
-  std::size_t at = 0;
-  while (at < text.size()) {
-    const std::size_t end = text.find('\n', at);
-    const std::string_view line = trim_blanks(text.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at));
-    at = end == std::string_view::npos ? text.size() : end + 1;
-    ++line_number;
-    if (line.empty()) continue;
-    const auto cells = split_cells(line);
-    if (!header_seen) {
-      header_seen = true;
-      if (cells.size() != 2 || cells[0] != "trial" || cells[1] != "chosen") {
-        problems.error(line_number, "the header must be 'trial,chosen', not '" + escape_input(line) + "'");
-        break;  // what follows cannot be read without it
-      }
-      continue;
-    }
+  CsvLines lines(text, {.trim_blanks = true, .comments = false});
+  const std::optional<std::string_view> header = lines.header();
+  bool header_ok = false;
+  if (header) {
+    const auto cells = split_cells(*header);
+    header_ok = cells.size() == 2 && cells[0] == "trial" && cells[1] == "chosen";
+    // What follows cannot be read without it.
+    if (!header_ok) problems.error(lines.line(), "the header must be 'trial,chosen', not '" + escape_input(*header) + "'");
+  }
+  while (header_ok) {
+    const std::optional<std::string_view> line = lines.row();
+    if (!line) break;
+    const int line_number = lines.line();
+    const auto cells = split_cells(*line);
     if (cells.size() != 2) {
       problems.error(line_number, "expected 2 cells (trial,chosen), found " + std::to_string(cells.size()));
       continue;
@@ -91,7 +88,7 @@ ResponsesResult parse_responses(std::string_view text, const std::string& file_n
     answered_at[trial - 1] = line_number;
     chosen[trial - 1] = image;
   }
-  if (!header_seen) problems.error(line_number > 0 ? 1 : 0, "empty file: expected the header 'trial,chosen'");
+  if (!header) problems.error(lines.line() > 0 ? 1 : 0, "empty file: expected the header 'trial,chosen'");
   ResponsesResult result;
   if (!problems.has_errors()) {
     std::vector<std::size_t> missing;

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 
+#include "storage/csv_lines.hpp"
 #include "storage/limits.hpp"
 #include "storage/read_file.hpp"
 #include "storage/study/trial_text.hpp"
@@ -72,8 +73,7 @@ TrialText<Row> parse_table(std::string_view text, const std::string& file_name, 
   const std::size_t rows = static_cast<std::size_t>(std::count(rest.begin(), rest.end(), '\n')) +
                            (rest.empty() || rest.back() == '\n' ? 0 : 1);
   if (rows > kMaxTrialRows) {
-    list.error(static_cast<int>(kMaxTrialRows) + 2,
-               "more than " + std::to_string(kMaxTrialRows) + " rows (limit " + std::to_string(kMaxTrialRows) + ")");
+    list.error(static_cast<int>(kMaxTrialRows) + 2, csv_row_limit_problem(kMaxTrialRows));
     return finish();
   }
   std::map<std::string, std::pair<int, int>, std::less<>> last_trial;  // participant -> trial, line

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "storage/csv_lines.hpp"
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 
@@ -20,27 +21,12 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
   std::vector<ProbePathPoint> path;
   DiagnosticList list(file_name);
   auto error = [&](int line, std::string_view message) { list.error(line, message); };
-  int line = 0;
-  bool header_seen = false;
-  std::size_t rows = 0;
-  std::size_t pos = 0;
-  while (pos < text.size()) {
-    std::size_t eol = text.find('\n', pos);
-    if (eol == std::string_view::npos) eol = text.size();
-    std::string_view row = text.substr(pos, eol - pos);
-    pos = eol + 1;
-    ++line;
-    if (!row.empty() && row.back() == '\r') row.remove_suffix(1);
-    if (row.empty() || row.front() == '#') continue;
-    if (!header_seen) {
-      header_seen = true;
-      if (row != "time_s,x_mm,y_mm,z_mm") error(line, "the header must be 'time_s,x_mm,y_mm,z_mm'");
-      continue;
-    }
-    if (++rows > kMaxProbePathRows) {
-      error(line, "more than " + std::to_string(kMaxProbePathRows) + " rows (limit " + std::to_string(kMaxProbePathRows) + ")");
-      break;
-    }
+  CsvLines lines(text, {.max_rows = kMaxProbePathRows});
+  const std::optional<std::string_view> header = lines.header();
+  if (header && *header != "time_s,x_mm,y_mm,z_mm") error(lines.line(), "the header must be 'time_s,x_mm,y_mm,z_mm'");
+  while (const std::optional<std::string_view> next = lines.row()) {
+    const int line = lines.line();
+    std::string_view row = *next;
     double v[4];
     int n = 0;
     bool bad = false;
@@ -86,8 +72,9 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
     }
     path.push_back({v[0], Vec3{v[1], v[2], v[3]} * 1e-3});
   }
-  if (!header_seen) error(0, "empty file, expected the header 'time_s,x_mm,y_mm,z_mm'");
-  else if (path.empty() && !list.has_errors()) error(line, "the path has no rows");
+  if (lines.past_row_limit()) error(lines.line(), lines.row_limit_problem());
+  if (!header) error(0, "empty file, expected the header 'time_s,x_mm,y_mm,z_mm'");
+  else if (path.empty() && !list.has_errors()) error(lines.line(), "the path has no rows");
   if (!list.has_errors()) result.path = std::move(path);
   result.diagnostics = list.take();
   return result;
