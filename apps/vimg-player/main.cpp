@@ -59,24 +59,10 @@ int run(const PlayerArgs& args) {
   if (!loaded.ok()) return 1;
   const Image& image = *loaded.image;
 
-  bool profile_ok = false;
-  const ActuatorProfile profile = load_profile_or_ideal(args, profile_ok);
-  if (!profile_ok) return 1;
-  const auto spec = parse_output_spec(args.output);
-  if (!spec.spec) {
-    std::fprintf(stderr, "vimg-player: %s\n", spec.error.c_str());
-    return 2;
-  }
-
-  SignalRestScope signals;
-  std::unique_ptr<Output> output;
-  try {
-    output = open_output(*spec.spec, profile);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "vimg-player: %s\n", error.what());
-    return 1;
-  }
-  RestGuard rest(output->sink());  // whatever happens below, the actuator ends at rest
+  PlayerActuator actuator;  // whatever happens below, the actuator ends at rest
+  if (const int status = actuator.open(args)) return status;
+  const ActuatorProfile& profile = actuator.profile();
+  Output& output = actuator.output();
 
   SceneOptions scene_options;
   scene_options.carrier_frequency_hz = profile.resonance_hz;
@@ -103,8 +89,8 @@ int run(const PlayerArgs& args) {
   // messages taken below and reconnects a lost device, off the render thread.
   // --equalize: the drive goes through the actuator's equalizer on its way to the output (designed
   // in open(), before the render thread starts; real-time safe, player/actuator_sink.hpp).
-  ActuatorSink equalizing(output->sink(), profile.response, OutputSignal::drive, true);
-  DriveSink& drive_path = args.equalize ? static_cast<DriveSink&>(equalizing) : output->sink();
+  ActuatorSink equalizing(output.sink(), profile.response, OutputSignal::drive, true);
+  DriveSink& drive_path = args.equalize ? static_cast<DriveSink&>(equalizing) : output.sink();
   RealtimeRenderer renderer(drive_path, realtime);
   renderer.set_scene(scene);
   if (auto error = renderer.start()) {
@@ -112,9 +98,9 @@ int run(const PlayerArgs& args) {
     return 1;
   }
 
-  StatusText status(output->description(), sdl.scale_source, px_per_mm);
+  StatusText status(output.description(), sdl.scale_source, px_per_mm);
   auto report_messages = [&] {
-    for (auto& message : output->take_messages()) {
+    for (auto& message : output.take_messages()) {
       std::fprintf(stderr, "vimg-player: %s\n", message.c_str());
       status.note(std::move(message));
     }
@@ -137,7 +123,7 @@ int run(const PlayerArgs& args) {
     SDL_RenderClear(sdl.renderer);
     draw_image(sdl.renderer, image, view);
     input.draw_fingers(sdl.renderer);
-    draw_status_panel(sdl.renderer, status.lines(renderer.stats(), output->underruns(), output->device_gone()));
+    draw_status_panel(sdl.renderer, status.lines(renderer.stats(), output.underruns(), output.device_gone()));
     SDL_RenderPresent(sdl.renderer);
     SDL_Delay(10);
   }
@@ -145,9 +131,9 @@ int run(const PlayerArgs& args) {
   report_messages();  // the last faults of the session, drained when the service stopped
   const LoopStats stats = renderer.stats();
   std::printf("vimg-player: %s; %llu blocks at %.0f Hz, jitter p99 %.3f ms, max %.3f ms, %llu underruns; %s%s\n",
-              output->description().c_str(), static_cast<unsigned long long>(stats.blocks), stats.measured_rate_hz,
+              output.description().c_str(), static_cast<unsigned long long>(stats.blocks), stats.measured_rate_hz,
               stats.jitter_p99_s * 1e3, stats.jitter_max_s * 1e3,
-              static_cast<unsigned long long>(output->underruns()), describe(stats.priority).c_str(),
+              static_cast<unsigned long long>(output.underruns()), describe(stats.priority).c_str(),
               rest_requested() ? "; stopped by a signal" : "");
   return rest_requested() ? 128 + rest_signal() : 0;  // 130 for SIGINT, 143 for SIGTERM
 }

@@ -1,6 +1,7 @@
 #include "apps/vimg-player/player_setup.hpp"
 
 #include <cstdio>
+#include <exception>
 
 namespace vimg::player_app {
 
@@ -28,6 +29,27 @@ ActuatorProfile load_profile_or_ideal(const PlayerArgs& args, bool& ok) {
     if (ok) profile = *result.profile;
   }
   return profile;
+}
+
+int PlayerActuator::open(const PlayerArgs& args) {
+  bool profile_ok = false;
+  profile_ = load_profile_or_ideal(args, profile_ok);
+  if (!profile_ok) return 1;
+  auto parsed = parse_output_spec(args.output);
+  if (!parsed.spec) {
+    std::fprintf(stderr, "vimg-player: %s\n", parsed.error.c_str());
+    return 2;
+  }
+  spec_ = std::move(parsed.spec);
+  signals_.emplace();
+  try {
+    output_ = open_output(*spec_, profile_);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "vimg-player: %s\n", error.what());
+    return 1;
+  }
+  rest_.emplace(output_->sink());
+  return 0;
 }
 
 PlayerWindow::~PlayerWindow() {

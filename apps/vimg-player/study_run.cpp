@@ -7,8 +7,6 @@
 //   5. the masking noise, when the study asks for it (exit 1 naming the audio outputs there are);
 //   6. the window.
 #include <cstdio>
-#include <exception>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,7 +14,6 @@
 #include "apps/vimg-player/study_masking.hpp"
 #include "apps/vimg-player/study_responses.hpp"
 #include "apps/vimg-player/study_session.hpp"
-#include "hal/rest_on_exit.hpp"
 #include "player/actuator_sink.hpp"
 
 namespace vimg::player_app {
@@ -99,28 +96,15 @@ int run_study(const PlayerArgs& args) {
   print(log.warnings());
 
   // 4. The actuator.
-  bool profile_ok = false;
-  const ActuatorProfile profile = load_profile_or_ideal(args, profile_ok);
-  if (!profile_ok) return 1;
-  const auto spec = parse_output_spec(args.output);
-  if (!spec.spec) {
-    std::fprintf(stderr, "vimg-player: %s\n", spec.error.c_str());
-    return 2;
-  }
-  SignalRestScope signals;
-  std::unique_ptr<Output> output;
-  try {
-    output = open_output(*spec.spec, profile);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "vimg-player: %s\n", error.what());
-    return 1;
-  }
-  RestGuard rest(output->sink());  // whatever happens below, the actuator ends at rest
+  PlayerActuator actuator;  // whatever happens below, the actuator ends at rest
+  if (const int status = actuator.open(args)) return status;
+  const ActuatorProfile& profile = actuator.profile();
+  Output& output = actuator.output();
 
   // 5. The masking noise.
   MaskingNoisePlayer noise;
   if (material.study.masking_noise) {
-    if (auto error = noise.start(*material.study.masking_noise, *spec.spec)) {
+    if (auto error = noise.start(*material.study.masking_noise, actuator.spec())) {
       std::fprintf(stderr, "%s: error: %s\n", args.study_path->c_str(), error->c_str());
       return 1;
     }
@@ -134,9 +118,9 @@ int run_study(const PlayerArgs& args) {
   }
   StudyText text;
   StudyPictures pictures(window.renderer);
-  ActuatorSink equalizing(output->sink(), profile.response, OutputSignal::drive, true);
-  StudySession session{args, material, log, *output,
-                       args.equalize ? static_cast<DriveSink&>(equalizing) : output->sink(),
+  ActuatorSink equalizing(output.sink(), profile.response, OutputSignal::drive, true);
+  StudySession session{args, material, log, output,
+                       args.equalize ? static_cast<DriveSink&>(equalizing) : output.sink(),
                        {}, window.renderer, window.width_px, window.height_px, window.px_per_mm, text, pictures};
   SceneOptions scene_options;
   scene_options.carrier_frequency_hz = profile.resonance_hz;
@@ -146,7 +130,7 @@ int run_study(const PlayerArgs& args) {
   }
   std::printf("vimg-player: study %s, participant %s: %zu trials, %zu done; trial file %s; output %s%s%s\n",
               args.study_path->c_str(), args.participant.c_str(), material.plan.size(), log.completed(),
-              log.path().string().c_str(), output->description().c_str(),
+              log.path().string().c_str(), output.description().c_str(),
               material.study.masking_noise ? "; masking noise " : "", noise.description().c_str());
   std::fflush(stdout);
   const int status = scripted ? run_scripted_study(session, chosen, gesture) : run_live_study(session);
