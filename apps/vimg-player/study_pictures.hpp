@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "apps/vimg-player/image_view.hpp"
 #include "primitives/image.hpp"
 
 namespace vimg::player_app {
@@ -27,8 +28,7 @@ class StudyPictures {
   struct Entry {
     const Image* image = nullptr;
     double px_per_mm = 0.0;
-    SDL_Texture* texture = nullptr;
-    int width_px = 0, height_px = 0;
+    PictureTexture picture;
   };
   const Entry& entry(const Image& image, double px_per_mm);
 
