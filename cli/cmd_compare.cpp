@@ -95,7 +95,8 @@ int run_compare_command(const CompareArgs& a) {
   if (!result.ok()) return kExitFailure;
   for (const std::string& w : result.warnings) std::fprintf(stderr, "%s: warning: %s\n", kProgram, w.c_str());
   // Written atomically; a signal that arrives before the rename still leaves nothing.
-  AtomicFileWriter file(a.out);
+  // A new report takes the permission bits all the inputs share (one private image keeps it private).
+  AtomicFileWriter file(a.out, NewFileMode::of_all({request.inputs.begin(), request.inputs.end()}));
   file.write(study::compare_output_text(a.out, result));
   if (rest_requested()) {
     file.abort();

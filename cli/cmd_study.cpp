@@ -58,7 +58,11 @@ int run_report(const ReportArgs& a) {
   const std::string text = ext == ".json"   ? study::report_json(report)
                            : ext == ".html" ? study::report_html(report)
                                             : study::report_markdown(report);
-  if (const auto error = write_file_atomically(a.out, text)) {
+  // A new report takes the permission bits all its inputs share: trial files hold participants'
+  // data, and a private one keeps the report private.
+  std::vector<std::filesystem::path> sources(a.trials.begin(), a.trials.end());
+  sources.insert(sources.end(), a.predicted.begin(), a.predicted.end());
+  if (const auto error = write_file_atomically(a.out, text, NewFileMode::of_all(sources))) {
     std::fprintf(stderr, "%s: %s\n", kProgram, error->c_str());
     return kExitFailure;
   }

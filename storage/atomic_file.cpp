@@ -110,6 +110,12 @@ NewFileMode NewFileMode::of(const std::filesystem::path& made_from) {
   return {static_cast<unsigned>(source.st_mode) & 0777u};
 }
 
+NewFileMode NewFileMode::of_all(const std::vector<std::filesystem::path>& made_from) {
+  NewFileMode mode;
+  for (const std::filesystem::path& path : made_from) mode.bits &= of(path).bits;
+  return mode;
+}
+
 AtomicFileWriter::AtomicFileWriter(std::filesystem::path path, NewFileMode new_file_mode) : path_(std::move(path)) {
   if (path_.filename().empty() || path_.filename() == "." || path_.filename() == "..") {
     error_ = path_.string() + ": not a file name";

@@ -20,6 +20,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace vimg {
 
@@ -45,6 +46,9 @@ struct NewFileMode {
   // The read, write and execute bits of the file an output is made from (no set-user-ID, set-group-ID
   // or sticky bit, as cp without -p); 0666 when it cannot be read.
   static NewFileMode of(const std::filesystem::path& made_from);
+  // An output made from several files (a report of many participants' trial files, a comparison of
+  // many images): the bits every one of them has, so that one private input keeps the output private.
+  static NewFileMode of_all(const std::vector<std::filesystem::path>& made_from);
 };
 
 // Returns an error message naming the path, or nothing on success.

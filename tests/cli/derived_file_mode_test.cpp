@@ -2,6 +2,7 @@
 // umask, as cp's copy does (`vimg convert private.vimg copy.vimg` with a 0600 input gave a 0644
 // output); a destination that exists keeps its own. Every command that derives one file from
 // another: convert, import, render (and its register trace), gesture import and merge, volume probe.
+// An output made from several files (compare, study report) takes the bits they all share.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -117,6 +118,30 @@ TEST_F(DerivedFileMode, VolumeProbeGivesTheScenesBits) {
   std::ofstream(dir_ / "P.csv") << "time_s,x_mm,y_mm,z_mm\n0,-70,-20,-50\n0.05,70,20,50\n";
   vimg("volume probe S/study.vscene.xml --path P.csv --out F.csv");
   EXPECT_EQ(mode_of("F.csv"), kGroupRead);
+}
+
+TEST_F(DerivedFileMode, CompareAndStudyReportTakeTheBitsEveryInputShares) {
+  input(kData / "compare" / "dot.vimg", "dot.vimg", kShared);
+  input(kData / "compare" / "line.vimg", "line.vimg", kGroupRead);
+  vimg("compare dot.vimg line.vimg --out predicted.json");
+  EXPECT_EQ(mode_of("predicted.json"), kGroupRead);
+  input(kData / "compare" / "surface.vimg", "surface.vimg", kPrivate);
+  vimg("compare dot.vimg line.vimg surface.vimg --out private.html");
+  EXPECT_EQ(mode_of("private.html"), kPrivate);
+
+  // Two participants' trial files; one of them private.
+  const std::string header = "participant,set,trial,presented,chosen,correct,rub_s,response_s,path_mm,time_utc\n";
+  std::ofstream(dir_ / "P01.trials.csv") << header << "P01,a,1,dot,dot,1,2.5,1.0,120,2026-11-25T16:38:51Z\n"
+                                         << "P01,a,2,line,line,1,2.5,1.0,120,2026-11-25T16:39:51Z\n";
+  std::ofstream(dir_ / "P02.trials.csv") << header << "P02,a,1,line,dot,0,2.5,1.0,120,2026-11-25T16:38:51Z\n"
+                                         << "P02,a,2,dot,dot,1,2.5,1.0,120,2026-11-25T16:39:51Z\n";
+  fs::permissions(dir_ / "P01.trials.csv", kShared);
+  fs::permissions(dir_ / "P02.trials.csv", kGroupRead);
+  vimg("study report P01.trials.csv P02.trials.csv --out report.md");
+  EXPECT_EQ(mode_of("report.md"), kGroupRead);
+  fs::permissions(dir_ / "P01.trials.csv", kPrivate);
+  vimg("study report P01.trials.csv P02.trials.csv --predicted predicted.json --out report.json");
+  EXPECT_EQ(mode_of("report.json"), kPrivate);
 }
 
 }  // namespace
