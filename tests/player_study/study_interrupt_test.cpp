@@ -12,22 +12,17 @@
 namespace vimg::study_test {
 namespace {
 
-class PlayerStudyInterrupted : public ::testing::Test {
+class PlayerStudyInterrupted : public PlayerStudyTest {
  protected:
   void SetUp() override {
-    root_ = fs::path(VIMG_BINARY_DIR) / "test_output" / "player_study" /
-            ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(root_);
-    fs::create_directories(root_ / "results");
+    PlayerStudyTest::SetUp();
     study_file_ = kExample / "study.xml";
     study_ = load_study(study_file_);
   }
   std::vector<std::string> args(const std::string& participant, const std::string& wav) const {
-    return {"--study", study_file_.string(), "--participant", participant, "--results", (root_ / "results").string(),
-            "--responses", (root_ / "R.csv").string(), "--gesture", (root_ / "G.csv").string(), "--output",
-            "wav:" + (root_ / wav).string(), "--window", "800x600", "--px-per-mm", "3"};
+    return scripted(study_file_, participant, wav);
   }
-  fs::path root_, study_file_;
+  fs::path study_file_;
   MatchingStudy study_;
 };
 

@@ -70,6 +70,28 @@ Finished Player::wait() {
   return f;
 }
 
+void PlayerStudyTest::SetUp() {
+  root_ = fs::path(VIMG_BINARY_DIR) / "test_output" / "player_study" /
+          ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  fs::remove_all(root_);
+  fs::create_directories(root_ / "results");
+}
+
+std::vector<std::string> PlayerStudyTest::study_args(const fs::path& study, const std::string& participant,
+                                                     std::vector<std::string> more) const {
+  std::vector<std::string> args{"--study", study.string(), "--participant", participant, "--results",
+                                (root_ / "results").string(), "--window", "800x600", "--px-per-mm", "3"};
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+std::vector<std::string> PlayerStudyTest::scripted(const fs::path& study, const std::string& participant,
+                                                   const std::string& wav) const {
+  return study_args(study, participant,
+                    {"--responses", (root_ / "R.csv").string(), "--gesture", (root_ / "G.csv").string(), "--output",
+                     "wav:" + (root_ / wav).string()});
+}
+
 Finished run_player(const std::vector<std::string>& args, const fs::path& capture) {
   Player player(args, capture);
   return player.wait();

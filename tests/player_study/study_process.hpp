@@ -4,6 +4,8 @@
 // from the participant's plan, a short rubbing gesture).
 #include <sys/types.h>
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -39,6 +41,18 @@ class Player {
  private:
   pid_t pid_ = -1;
   fs::path out_, err_;
+};
+
+// A test of its own folder: test_output/player_study/<test name>, emptied, with results/ in it.
+class PlayerStudyTest : public ::testing::Test {
+ protected:
+  void SetUp() override;
+  // --study STUDY --participant P --results <folder>/results in an 800x600 window at 3 px/mm, then `more`.
+  std::vector<std::string> study_args(const fs::path& study, const std::string& participant,
+                                      std::vector<std::string> more = {}) const;
+  // A scripted run: the responses <folder>/R.csv, the gesture <folder>/G.csv, the output wav:<folder>/WAV.
+  std::vector<std::string> scripted(const fs::path& study, const std::string& participant, const std::string& wav) const;
+  fs::path root_;
 };
 
 // Runs to the end.
