@@ -1,6 +1,6 @@
 // The location study's parts that need no running program (apps/force/location_study_*.hpp): the
-// marks file, the port that takes the mark, a trial's scene, target and row, the study's command line
-// and its status line.
+// marks file, the port that takes the mark, a trial's scene, target and row. The study's command
+// line and status line are in force_args_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,11 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "apps/force/force_args.hpp"
 #include "apps/force/location_study_marks.hpp"
 #include "apps/force/location_study_port.hpp"
 #include "apps/force/location_study_trial.hpp"
-#include "apps/force/status_line.hpp"
 #include "hal/force/hid_force_device.hpp"
 #include "hal/force/hid_force_emulator.hpp"
 
@@ -281,71 +279,6 @@ TEST(LocationTrial, TheTargetIsTheBendsCentreOnThePlaneAndTheErrorIsInXZ) {
   // On the target itself, no error.
   in.mark_m = {in.layout.bend_x_mm * 1e-3, 0.0, in.layout.plane_z_mm * 1e-3};
   EXPECT_NEAR(location_trial_row(in).error_mm, 0.0, 1e-12);
-}
-
-// --- the study's command line and status line ---
-
-ForceArgsResult parse(std::vector<const char*> args) {
-  args.insert(args.begin(), "vimg-force");
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  ForceArgsResult r = parse_force_args(static_cast<int>(args.size()), args.data());
-  testing::internal::GetCapturedStdout();
-  testing::internal::GetCapturedStderr();
-  return r;
-}
-
-TEST(LocationStudyArgs, ReadsTheStudyOptions) {
-  const ForceArgsResult r = parse({"--study", "s.xml", "--participant", "P-01_a", "--results", "out", "--device", "sim",
-                                   "--path", "p.csv", "--marks", "m.csv", "--restart", "--realtime-priority", "0"});
-  ASSERT_TRUE(r.args);
-  EXPECT_TRUE(r.args->is_study());
-  EXPECT_EQ(r.args->study_file, "s.xml");
-  EXPECT_EQ(r.args->participant, "P-01_a");
-  EXPECT_EQ(r.args->results_dir, "out");
-  EXPECT_EQ(r.args->path_file, "p.csv");
-  EXPECT_EQ(r.args->marks_file, "m.csv");
-  EXPECT_TRUE(r.args->restart);
-  const ForceArgsResult hid = parse({"--study", "s.xml", "--participant", "P1", "--results", "out", "--device", "hid"});
-  ASSERT_TRUE(hid.args);
-  EXPECT_FALSE(hid.args->restart);
-  EXPECT_FALSE(hid.args->is_sim());
-  EXPECT_FALSE(parse({"s.vscene.xml", "--device", "sim"}).args->is_study());
-}
-
-TEST(LocationStudyArgs, UsageErrorsExitTwo) {
-  const std::vector<std::vector<const char*>> bad = {
-      {"--study", "s.xml", "--results", "out", "--device", "sim"},                              // no participant
-      {"--study", "s.xml", "--participant", "P1", "--device", "sim"},                            // no results
-      {"--study", "s.xml", "--participant", "P 1", "--results", "out", "--device", "sim"},      // not an ID
-      {"--study", "s.xml", "--participant", "../P1", "--results", "out", "--device", "sim"},    // not an ID
-      {"--study", "s.xml", "--participant", "", "--results", "out", "--device", "sim"},         // not an ID
-      {"s.vscene.xml", "--study", "s.xml", "--participant", "P1", "--results", "o", "--device", "sim"},  // both
-      {"--study", "s.xml", "--participant", "P1", "--results", "o", "--device", "hid", "--marks", "m.csv"},
-      {"--study", "s.xml", "--participant", "P1", "--results", "o", "--device", "sim", "--seconds", "2"},
-      {"--study", "s.xml", "--participant", "P1", "--results", "o", "--device", "sim", "--log", "f.csv"},
-      {"--study", "s.xml", "--participant", "P1", "--results", "o", "--device", "sim", "--telemetry", "t.json"},
-      {"--study", "s.xml", "--participant", "P1", "--results", "o"},                             // no device
-      {"s.vscene.xml", "--device", "sim", "--participant", "P1"},                                // needs --study
-      {"s.vscene.xml", "--device", "sim", "--restart"},
-      {"s.vscene.xml", "--device", "sim", "--marks", "m.csv"},
-      {"--device", "sim"},                                                                       // neither
-  };
-  for (const auto& args : bad) {
-    const ForceArgsResult r = parse(args);
-    EXPECT_FALSE(r.args) << args[1] << " " << args.back();
-    EXPECT_EQ(r.exit_code, 2) << args[1] << " " << args.back();
-  }
-  std::string long_id(65, 'a');
-  EXPECT_FALSE(parse({"--study", "s.xml", "--participant", long_id.c_str(), "--results", "o", "--device", "sim"}).args);
-  long_id.pop_back();
-  EXPECT_TRUE(parse({"--study", "s.xml", "--participant", long_id.c_str(), "--results", "o", "--device", "sim"}).args);
-}
-
-TEST(LocationStudyStatus, SaysTrialMetaphorAndWholeSecondsOnly) {
-  EXPECT_EQ(format_trial_status(3, 14, LocationMetaphor::roughness, 12.9), "trial 3 of 14  roughness  elapsed 12 s");
-  EXPECT_EQ(format_trial_status(14, 14, LocationMetaphor::transition_cue, 0.2), "trial 14 of 14  transition cue  elapsed 0 s");
-  EXPECT_EQ(format_trial_status(1, 2, LocationMetaphor::transition_cue, NAN), "trial 1 of 2  transition cue  elapsed 0 s");
 }
 
 }  // namespace
