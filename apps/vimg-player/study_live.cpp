@@ -56,15 +56,7 @@ class LiveStudy {
       session_.draw(flow_, false, monotonic_s());
       SDL_Delay(10);
     }
-    if (rest_requested()) return 128 + rest_signal();  // 130 for SIGINT, 143 for SIGTERM
-    if (flow_.screen() != StudyScreen::end) {
-      std::printf("vimg-player: stopped before trial %zu of %zu; running again continues there\n", flow_.trial(),
-                  flow_.total_trials());
-    } else {
-      std::printf("vimg-player: all %zu trials done; trial file %s\n", flow_.total_trials(),
-                  session_.log.path().string().c_str());
-    }
-    return cmdline::kExitOk;
+    return session_.finish(flow_);
   }
 
  private:

@@ -14,6 +14,8 @@
 #include "apps/vimg-player/study_masking.hpp"
 #include "apps/vimg-player/study_responses.hpp"
 #include "apps/vimg-player/study_session.hpp"
+#include "cmdline/command_line.hpp"
+#include "hal/rest_on_exit.hpp"
 #include "player/actuator_sink.hpp"
 
 namespace vimg::player_app {
@@ -56,6 +58,17 @@ bool StudySession::record(const StudyTrialResult& result) const {
 
 void StudySession::report_messages() const {
   for (const auto& message : output.take_messages()) std::fprintf(stderr, "vimg-player: %s\n", message.c_str());
+}
+
+int StudySession::finish(const StudyFlow& flow) const {
+  if (rest_requested()) return 128 + rest_signal();  // 130 for SIGINT, 143 for SIGTERM
+  if (flow.screen() != StudyScreen::end) {
+    std::printf("vimg-player: stopped before trial %zu of %zu; running again continues there\n", flow.trial(),
+                flow.total_trials());
+  } else {
+    std::printf("vimg-player: all %zu trials done; trial file %s\n", flow.total_trials(), log.path().string().c_str());
+  }
+  return cmdline::kExitOk;
 }
 
 int run_study(const PlayerArgs& args) {

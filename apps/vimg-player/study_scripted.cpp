@@ -88,15 +88,7 @@ int run_scripted_study(StudySession& session, const std::vector<std::size_t>& ch
   }
   if (flow.screen() == StudyScreen::end) session.draw(flow, true, clock_s);
   stream.finish();  // the output at rest, its file complete
-  if (rest_requested()) return 128 + rest_signal();  // 130 for SIGINT, 143 for SIGTERM
-  if (flow.screen() != StudyScreen::end) {
-    std::printf("vimg-player: stopped before trial %zu of %zu; running again continues there\n", flow.trial(),
-                flow.total_trials());
-  } else {
-    std::printf("vimg-player: all %zu trials done; trial file %s\n", flow.total_trials(),
-                session.log.path().string().c_str());
-  }
-  return cmdline::kExitOk;
+  return session.finish(flow);
 }
 
 }  // namespace vimg::player_app

@@ -43,6 +43,9 @@ struct StudySession {
   bool record(const StudyTrialResult& result) const;
   // Output faults and warnings since the last call, to stderr.
   void report_messages() const;
+  // How a run that has left its loop ends: 130/143 after SIGINT/SIGTERM; else 0, with the line that
+  // says where the study stopped (running again continues there) or that every trial is done.
+  int finish(const StudyFlow& flow) const;
 };
 
 // The live run (a person at the screen) and the scripted one (--responses, --gesture). Both return
