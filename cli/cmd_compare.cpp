@@ -89,6 +89,10 @@ int run_compare_command(const CompareArgs& a) {
   // SIGINT/SIGTERM only set a flag; the renders stop at their next block and nothing is written.
   const SignalRestScope signals;
   request.should_stop = [] { return rest_requested(); };
+  // Progress on stderr: a comparison of many images on a large canvas takes seconds.
+  request.progress = [](std::size_t analysed, std::size_t total) {
+    std::fprintf(stderr, "%s: %zu of %zu signals analysed\n", kProgram, analysed, total);
+  };
   const study::CompareResult result = study::run_compare(request);
   for (const Diagnostic& d : result.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
   if (result.interrupted || rest_requested()) return interrupted(a.out);

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstdio>
 #include <map>
+#include <mutex>
 
 #include "storage/file_extension.hpp"
 #include "storage/image_io.hpp"
@@ -146,6 +147,8 @@ CompareResult run_compare(const CompareRequest& request) {
   // Render (images) and analyse (all) on every thread; a render stops at should_stop().
   std::vector<PerceptualFeatures> features(n);
   std::atomic<bool> stopped{false};
+  std::mutex progress_mutex;
+  std::size_t analysed = 0;
   run_tasks(n, threads, [&](std::size_t i, int) {
     if (stopped.load()) return;
     std::vector<float> samples = std::move(loaded[i].samples);
@@ -161,6 +164,10 @@ CompareResult run_compare(const CompareRequest& request) {
     const std::vector<double> wide(samples.begin(), samples.end());
     samples = {};
     features[i] = analyse(wide, request.calibration);
+    if (request.progress) {
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      request.progress(++analysed, n);
+    }
   });
   if (stopped.load() || (request.should_stop && request.should_stop())) {
     r.interrupted = true;

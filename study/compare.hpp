@@ -49,6 +49,9 @@ struct CompareRequest {
   ChoiceModel choice;
   int threads = 0;                       // <= 0: one per core
   bool (*should_stop)() = nullptr;       // asked between render blocks (SIGINT); null: never
+  // Called once per input when its signal is analysed (`analysed` of `total`), from the worker
+  // threads, one call at a time; null: nothing is reported.
+  void (*progress)(std::size_t analysed, std::size_t total) = nullptr;
 };
 
 enum class CompareInputKind { image, wav_signal, csv_signal };

@@ -200,8 +200,9 @@ TEST_F(CompareCommand, RenderedSignalsAreComparedAsTheyAre) {
   EXPECT_FALSE(fs::exists(dir_ / "r2.json"));
 }
 
-// A comparison that takes a while (a large canvas, several images) interrupted by a signal: exit
-// 128 + signal, no report and no temporary in the folder.
+// A comparison that takes a while (a large canvas, several images) interrupted by a signal once it
+// says the first of 32 signals is analysed (a state, not a time): exit 128 + signal, no report and
+// no temporary in the folder.
 TEST_F(CompareCommand, AnInterruptedComparisonWritesNothing) {
   const std::string image = write("big.vimg",
                                   "<?xml version=\"1.0\"?>\n<vibroimage version=\"1.0\" width=\"400\" height=\"400\">\n"
@@ -211,8 +212,12 @@ TEST_F(CompareCommand, AnInterruptedComparisonWritesNothing) {
   for (int i = 0; i < 32; ++i) inputs += " big.vimg";  // seconds of work even in a release build
   for (const auto& [signal_name, expected] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
     const std::string cmd = "cd '" + dir_.string() + "' && ('" + kVimg + "' compare" + inputs +
-                            " --out r.json & pid=$!; sleep 0.5; kill -" + signal_name + " $pid; wait $pid)";
+                            " --out r.json 2>err.txt & pid=$!; until grep -q ' of 32 signals analysed' err.txt; do "
+                            "kill -0 $pid 2>/dev/null || break; sleep 0.01; done; kill -" + signal_name +
+                            " $pid; wait $pid; status=$?; cat err.txt; rm -f err.txt; exit $status)";
     const auto r = test::run_command(cmd);
+    EXPECT_NE(r.out.find("1 of 32 signals analysed"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("32 of 32 signals analysed"), std::string::npos) << "the signal came after the work\n" << r.out;
     EXPECT_EQ(r.exit_code, expected) << r.out;
     EXPECT_NE(r.out.find("interrupted; r.json not written"), std::string::npos) << r.out;
     EXPECT_FALSE(fs::exists(dir_ / "r.json"));
