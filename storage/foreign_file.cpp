@@ -4,6 +4,7 @@
 
 #include "storage/diagnostic.hpp"
 #include "storage/png_codec.hpp"
+#include "storage/png_signature.hpp"
 
 namespace vimg {
 namespace {
@@ -14,10 +15,12 @@ struct Magic {
   std::string_view what;
 };
 
-constexpr std::array<Magic, 13> kMagics{{
+constexpr std::array<Magic, 15> kMagics{{
     {"NRRD000", 0, "a NRRD volume (volumes are explored through a volume scene: vimg volume probe, vimg-force)"},
     {"\xFF\xD8\xFF", 0, "a JPEG picture (import a picture with vimg import)"},
     {"GIF8", 0, "a GIF picture"},
+    {"\x8AMNG\r\n\x1A\n", 0, "an MNG animation"},
+    {"\x8BJNG\r\n\x1A\n", 0, "a JNG picture"},
     {"%PDF-", 0, "a PDF document"},
     {"PK\x03\x04", 0, "a ZIP archive (or a document packed as one)"},
     {"\x1F\x8B", 0, "gzip-compressed data"},
@@ -40,6 +43,7 @@ bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; 
 
 std::optional<ForeignKind> foreign_file_kind(std::string_view bytes) {
   if (looks_like_png(bytes)) return std::nullopt;
+  if (const auto damage = damaged_png_signature(bytes)) return ForeignKind{damaged_png_signature_message(*damage), 1, true};
   for (const Magic& m : kMagics) {
     if (starts_with_at(bytes, m.offset, m.bytes)) return ForeignKind{std::string(m.what), 1};
   }

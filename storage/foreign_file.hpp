@@ -12,10 +12,13 @@ namespace vimg {
 // 'time_s,x_mm'"...) with the 1-based line where that shows, or nothing when the bytes may be XML
 // (their first character after blanks and a UTF-8 byte order mark is '<'), are empty, start with a
 // UTF-16/UTF-32 byte order mark or a NUL, or are a PNG: the XML and PNG readers say what is wrong
-// with those.
+// with those. A PNG whose signature was damaged on its way (png_signature.hpp) is named as such:
+// `what` is then the whole message ("a damaged PNG signature: line endings changed by a text-mode
+// transfer (...); ...") and `damaged_png` is set.
 struct ForeignKind {
   std::string what;
   int line = 1;
+  bool damaged_png = false;
 };
 std::optional<ForeignKind> foreign_file_kind(std::string_view bytes);
 

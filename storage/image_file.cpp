@@ -36,6 +36,7 @@ LoadResult load_image_file(const std::filesystem::path& path) {
   if (!read.bytes) return failure(name, read.error);
   const std::string& bytes = *read.bytes;
   if (const std::optional<ForeignKind> foreign = foreign_file_kind(bytes)) {
+    if (foreign->damaged_png) return failure(name, foreign->what);
     LoadResult result;
     result.diagnostics.push_back({Diagnostic::Severity::error, name, foreign->line,
                                   "not an image: this is " + foreign->what +

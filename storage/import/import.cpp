@@ -8,6 +8,7 @@
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
 #include "storage/png_codec.hpp"
+#include "storage/png_signature.hpp"
 #include "storage/read_file.hpp"
 #include "storage/file_extension.hpp"
 
@@ -43,6 +44,7 @@ ImportResult import_file(const std::filesystem::path& path, const ImportOptions&
   if (ext == ".svg") {
     result = import_svg(*read.bytes, name, options);
   } else {
+    if (const auto damage = damaged_png_signature(*read.bytes)) return import_failure(name, damaged_png_signature_message(*damage));
     if (!looks_like_png(*read.bytes)) return import_failure(name, "is not a PNG file (no PNG signature)");
     const PngText text = read_png_text(*read.bytes);
     if (!text.error.empty()) return import_failure(name, (text.damaged ? "damaged PNG: " : "") + text.error);
