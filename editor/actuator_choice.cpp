@@ -3,14 +3,17 @@
 #include <imgui.h>
 
 #include "editor/core/layout_log.hpp"
+#include "storage/shipped_data.hpp"
 
 namespace vimg::editor {
 namespace {
 
 // Where the shipped profiles are: the working folder's assets/profiles (as a relative --actuator
-// path is read), else the source tree's, next to the examples.
+// path is read), else the shipped data's (storage/shipped_data.hpp).
 std::vector<std::filesystem::path> profile_folders() {
-  return {std::filesystem::path("assets") / "profiles", std::filesystem::path(VIMG_EXAMPLES_DIR).parent_path() / "profiles"};
+  std::vector<std::filesystem::path> folders{std::filesystem::path("assets") / "profiles"};
+  if (const auto data = shipped_data_dir()) folders.push_back(*data / "profiles");
+  return folders;
 }
 
 }  // namespace

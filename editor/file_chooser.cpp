@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "editor/core/layout_log.hpp"
+#include "storage/shipped_data.hpp"
 
 namespace vimg::editor {
 namespace {
@@ -77,7 +78,7 @@ void FileChooser::relist() { listing_ = list_folder(folder_, filters_[static_cas
 void FileChooser::draw_places() {
   ImGui::TextDisabled("Places");
   if (ImGui::Selectable("Home")) go_to(home_folder());
-  if (ImGui::Selectable("Examples")) go_to(VIMG_EXAMPLES_DIR);
+  if (const auto data = shipped_data_dir(); data && ImGui::Selectable("Examples")) go_to((*data / "examples").string());
   ImGui::Separator();
   ImGui::TextDisabled("Recent folders");
   const auto& folders = recent_folders_.paths();

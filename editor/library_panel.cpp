@@ -1,5 +1,7 @@
 #include "editor/library_panel.hpp"
 
+#include "storage/shipped_data.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -15,7 +17,8 @@ LibraryPanel::LibraryPanel(std::string library_dir, LayoutLog& layout)
 
 void LibraryPanel::refresh() {
   files_.clear();
-  std::vector<std::filesystem::path> dirs{VIMG_EXAMPLES_DIR};
+  std::vector<std::filesystem::path> dirs;
+  if (const auto data = shipped_data_dir()) dirs.push_back(*data / "examples");
   if (!library_dir_.empty()) {
     dirs.emplace_back(library_dir_);
   } else if (const char* home = std::getenv("HOME"); home && *home) {

@@ -2,6 +2,7 @@
 
 #include "storage/diagnostic.hpp"
 #include "storage/read_file.hpp"
+#include "storage/shipped_data.hpp"
 #include "storage/xml_limits.hpp"
 #include "storage/xml_parse_problem.hpp"
 
@@ -259,11 +260,19 @@ ProfileLoadResult parse_actuator_profile(std::string_view xml, const std::string
   return ProfileParser(file_name).parse(xml);
 }
 
-ProfileLoadResult load_actuator_profile(const std::filesystem::path& path) {
+ProfileLoadResult load_actuator_profile(const std::filesystem::path& argument) {
+  const std::filesystem::path path = resolve_profile_argument(argument);
   FileReadResult read = read_regular_file(path, kMaxProfileFileBytes);
   if (!read.bytes) {
     ProfileLoadResult result;
-    result.errors.push_back(path.string() + ": error: " + read.error);
+    std::string problem = read.error;
+    if (path == argument && !argument.has_parent_path() && !argument.has_extension()) {
+      const std::vector<std::string> shipped = shipped_profile_names();
+      problem += shipped.empty() ? "; " + shipped_data_help() : "; not a shipped profile either (shipped:";
+      for (const std::string& name : shipped) problem += " " + name;
+      if (!shipped.empty()) problem += ")";
+    }
+    result.errors.push_back(path.string() + ": error: " + problem);
     return result;
   }
   return parse_actuator_profile(*read.bytes, path.string());

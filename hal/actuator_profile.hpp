@@ -56,7 +56,9 @@ struct ProfileLoadResult {
 inline constexpr std::size_t kMaxProfileFileBytes = 256 * 1024;
 
 ProfileLoadResult parse_actuator_profile(std::string_view xml, const std::string& file_name);
-ProfileLoadResult load_actuator_profile(const std::filesystem::path& path);
+// `argument` is a path, or a shipped profile's bare name ("lra-175hz-drv2605l"), found through
+// storage/shipped_data.hpp when no file of that name is in the working folder.
+ProfileLoadResult load_actuator_profile(const std::filesystem::path& argument);
 
 // "gpiochip0:17" -> {gpiochip0, 17}; nothing when malformed.
 std::optional<GpioPin> parse_gpio_pin(std::string_view text);
