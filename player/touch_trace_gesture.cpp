@@ -32,8 +32,9 @@ TraceGestureResult trace_to_gesture(const TouchTrace& trace, const TouchMapping&
   AxisMap mx, my;
   if (mapping.panel_width_mm && mapping.panel_height_mm) {
     if (!xr.known() || !yr.known()) {
-      result.usage_problem = "--panel-mm needs the digitizer's axis ranges, and " + file_name +
-                             " has none (an evemu-record header or getevent -lp lines give them); pass --px-per-mm K instead";
+      const std::string problem = xr.known() ? touch_axis_problem(yr, "y") : touch_axis_problem(xr, "x");
+      result.usage_problem = "--panel-mm needs the digitizer's axis ranges, and " + file_name + " " + problem +
+                             "; pass --px-per-mm K instead";
       return result;
     }
     mx = {xr.min, *mapping.panel_width_mm / (xr.max - xr.min)};

@@ -27,7 +27,7 @@ struct TouchMapping {
 struct TraceGestureResult {
   std::optional<Gesture> gesture;
   std::vector<std::string> errors;  // "FILE:LINE: error: problem"
-  // Set when the mapping cannot be made at all (no ranges for --panel-mm, no mapping given and no
+  // Set when the mapping cannot be made at all (no ranges, or an empty one, for --panel-mm, no mapping given and no
   // resolution in the recording): what the user should pass. A usage error, not bad input.
   std::string usage_problem;
 };

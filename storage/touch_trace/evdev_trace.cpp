@@ -27,8 +27,8 @@ class TraceBuilder {
  public:
   explicit TraceBuilder(DiagnosticList& list) : list_(list) {}
 
-  void axis(const EvdevAxisRange& a) {
-    const TouchAxis axis{static_cast<double>(a.min), static_cast<double>(a.max), static_cast<double>(a.resolution)};
+  void axis(const EvdevAxisRange& a, int line) {
+    const TouchAxis axis{static_cast<double>(a.min), static_cast<double>(a.max), static_cast<double>(a.resolution), line};
     if (a.code == evdev::kAbsMtPositionX || (a.code == evdev::kAbsX && !mt_x_)) trace_.x = axis;
     if (a.code == evdev::kAbsMtPositionY || (a.code == evdev::kAbsY && !mt_y_)) trace_.y = axis;
     if (a.code == evdev::kAbsMtPressure || (a.code == evdev::kAbsPressure && !mt_pressure_)) trace_.pressure = axis;
@@ -310,15 +310,27 @@ TouchTraceParseResult parse_touch_trace(std::string_view text, const std::string
     pos = eol + 1;
     ++line_number;
     const EvdevLine l = reader.read(line);
+    if (l.kind == EvdevLine::Kind::bad && !list.keeps(line_number)) {
+      list.count(Diagnostic::Severity::error);  // beyond the limit: counted on the summary line
+      continue;
+    }
     if (l.kind == EvdevLine::Kind::bad) list.error(line_number, l.problem);
-    if (l.kind == EvdevLine::Kind::axis) builder.axis(l.axis);
+    if (l.kind == EvdevLine::Kind::axis) builder.axis(l.axis, line_number);
     if (l.kind == EvdevLine::Kind::event) reading = builder.event(l.event, line_number);
-    if (list.has_errors() && !list.keeps(line_number + 1)) reading = false;
   }
   TouchTraceParseResult result;
   result.trace = builder.finish();
   result.diagnostics = list.take();
   return result;
+}
+
+std::string touch_axis_problem(const TouchAxis& axis, const std::string& name) {
+  if (axis.known()) return "";
+  if (axis.line == 0) return "has none (an evemu-record header or getevent -lp lines give them)";
+  const auto whole = [](double v) { return std::to_string(static_cast<long long>(v)); };
+  const std::string where = ", line " + std::to_string(axis.line) + ")";
+  if (axis.min == axis.max) return "gives an empty " + name + " range (min " + whole(axis.min) + " = max " + whole(axis.max) + where;
+  return "gives a reversed " + name + " range (min " + whole(axis.min) + " > max " + whole(axis.max) + where;
 }
 
 TouchTraceParseResult load_touch_trace(const std::filesystem::path& path) {

@@ -10,6 +10,8 @@
 // starts, `move`, `up` when it ends (at its last position). Times are relative to the first event.
 // A recording of several devices (getevent) is read for the first device that reports touches.
 // Limits: kMaxTouchTraceFileBytes, kMaxGestureRows samples, kMaxTouchTraceFinger fingers at once.
+// Messages: at most kMaxDiagnosticsPerFile (DiagnosticList). Reading stops at an event after an
+// error; the bad lines before that event beyond the limit are counted on the summary line.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -24,8 +26,15 @@ struct TouchAxis {
   double min = 0.0;
   double max = 0.0;
   double units_per_mm = 0.0;  // the device's resolution, 0 when unknown
+  int line = 0;               // the line that gave the range; 0 when the recording gives none
   bool known() const { return max > min; }
 };
+
+// Why `axis` cannot map positions onto a panel ("" when it can), to follow the file's name: "has
+// none (an evemu-record header or getevent -lp lines give them)" when the recording gives no range,
+// "gives an empty x range (min 5 = max 5, line 12)" or "gives a reversed x range (min 9 > max 5,
+// line 12)"; `name` is the axis ("x").
+std::string touch_axis_problem(const TouchAxis& axis, const std::string& name);
 
 struct TouchSample {
   enum class Phase { down, move, up };

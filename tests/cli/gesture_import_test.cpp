@@ -109,6 +109,14 @@ TEST_F(GestureImport, WithoutAMappingOrRangesItIsAUsageError) {
   const auto no_ranges = vimg("gesture import '" + kTraces + "wacom-isdv4-e6.2fg-tap.events' --panel-mm 100x50 --out g.csv");
   EXPECT_EQ(no_ranges.exit_code, 2);
   EXPECT_NE(no_ranges.out.find("has none"), std::string::npos) << no_ranges.out;
+  std::ofstream(dir_ / "empty.evemu") << "A: 35 0 0 0 0 0\nA: 36 0 479 0 0 0\nE: 0.0 0003 0039 5\nE: 0.0 0003 0035 1\n"
+                                          "E: 0.0 0003 0036 1\nE: 0.0 0000 0000 0\n";
+  const auto empty_range = vimg("gesture import empty.evemu --panel-mm 100x50 --out g.csv");
+  EXPECT_EQ(empty_range.exit_code, 2);
+  EXPECT_NE(empty_range.out.find("--panel-mm needs the digitizer's axis ranges, and empty.evemu gives an empty x range "
+                                 "(min 0 = max 0, line 1); pass --px-per-mm K instead"),
+            std::string::npos)
+      << empty_range.out;
   const auto both = vimg("gesture import '" + kTraces + "getevent.two-fingers.txt' --panel-mm 100x50 --px-per-mm 3 --out g.csv");
   EXPECT_EQ(both.exit_code, 2);
   const auto bad_panel = vimg("gesture import '" + kTraces + "getevent.two-fingers.txt' --panel-mm 100 --out g.csv");
