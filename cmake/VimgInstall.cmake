@@ -3,7 +3,7 @@
 #   P/share/vibroimage             the shipped profiles, examples and gestures (storage/shipped_data.hpp
 #                                  finds them from the program's own location: ../share/vibroimage)
 #   P/share/doc/vibroimage         the docs
-#   P/share/man/man1               one man page per program, made at build time from its --help
+#   P/share/man/man1               one man page per program (gzipped), made at build time from its --help
 #   P/share/applications, P/share/mime/packages, P/share/icons/hicolor/scalable/apps
 #                                  the editor's desktop entry, the .vimg MIME type and the icon
 #   P/lib/udev/rules.d             the device access rules (docs/hardware.md)
@@ -54,11 +54,13 @@ if(VIMG_BUILD_MAN AND NOT VIMG_SANITIZE AND HELP2MAN)
   set(man_vimg-probe "explore a volume with the mouse and feel it on a force device")
   set(man_vimg-force "drive a desktop force device over a volume scene; run the location study")
   foreach(program ${vimg_installed_programs})
-    set(page ${PROJECT_BINARY_DIR}/man/${program}.1)
+    set(page ${PROJECT_BINARY_DIR}/man/${program}.1.gz)
     add_custom_command(OUTPUT ${page}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${PROJECT_BINARY_DIR}/man
       COMMAND ${CMAKE_COMMAND} -E env SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy
-              ${HELP2MAN} --no-info --section=1 "--name=${man_${program}}" --output=${page} $<TARGET_FILE:${program}>
+              ${HELP2MAN} --no-info --section=1 "--name=${man_${program}}" --output=${PROJECT_BINARY_DIR}/man/${program}.1
+              $<TARGET_FILE:${program}>
+      COMMAND gzip -9nf ${PROJECT_BINARY_DIR}/man/${program}.1
       DEPENDS ${program}
       COMMENT "man page of ${program} (help2man)"
       VERBATIM)
@@ -69,3 +71,25 @@ if(VIMG_BUILD_MAN AND NOT VIMG_SANITIZE AND HELP2MAN)
 elseif(VIMG_BUILD_MAN AND NOT VIMG_SANITIZE)
   message(STATUS "help2man not found: no man pages (scripts/setup.sh installs it)")
 endif()
+
+# The Debian package: `cpack -G DEB` in a release build folder gives vibroimage_VERSION_ARCH.deb
+# with its dependencies computed from the binaries (dpkg-shlibdeps). scripts/package_check.sh
+# installs it with apt, runs it from /usr/bin and removes it again.
+set(CPACK_PACKAGE_NAME vibroimage)
+set(CPACK_PACKAGE_VENDOR "vibroimage")
+set(CPACK_PACKAGE_CONTACT "vibroimage developers <vibroimage@localhost>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "vibrotactile images: draw, play and feel pictures on a touchscreen")
+set(CPACK_PACKAGE_DESCRIPTION "vibroimage draws vibrotactile images (DOT, LINE and SURFACE primitives on a canvas of
+physical size), renders finger motion over them into a drive signal for an LRA (I2C/SPI drivers,
+USB HID, audio or a file), drives desktop force devices over volumes, and predicts, runs and
+reports matching and location studies. Programs: vimg, vimg-editor, vimg-player, vimg-force,
+vimg-probe.")
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://localhost/vibroimage")
+set(CPACK_STRIP_FILES ON)
+set(CPACK_GENERATOR DEB)
+include(CPack)

@@ -12,7 +12,7 @@ packages=(
   xvfb xdotool imagemagick xauth python3
   locales
   libboost-math-dev python3-numpy python3-scipy
-  help2man desktop-file-utils
+  help2man desktop-file-utils dpkg-dev file
 )
 
 missing=()

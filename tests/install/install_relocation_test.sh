@@ -24,8 +24,9 @@ unset VIBROIMAGE_DATA_DIR
 for program in vimg vimg-force vimg-editor vimg-player vimg-probe; do
   [ -x "$prefix/bin/$program" ] || fail "$program is not installed"
   "$prefix/bin/$program" --version | grep -q "^$program " || fail "$program --version"
-  [ -s "$prefix/share/man/man1/$program.1" ] || fail "no man page for $program"
-  grep -q "^\.TH ${program^^} " "$prefix/share/man/man1/$program.1" || fail "$program.1 is not a man page"
+  [ -s "$prefix/share/man/man1/$program.1.gz" ] || fail "no man page for $program"
+  zcat "$prefix/share/man/man1/$program.1.gz" | grep -q "^\.TH ${program^^} " || fail "$program.1.gz is not a man page"
+  zcat "$prefix/share/man/man1/$program.1.gz" | grep -q 'print the version and exit' || fail "$program.1.gz lacks the options"
 done
 [ -s "$prefix/share/applications/vimg-editor.desktop" ] || fail "no desktop entry"
 grep -q '^MimeType=application/x-vibroimage;' "$prefix/share/applications/vimg-editor.desktop" || fail "desktop entry without the MIME type"
