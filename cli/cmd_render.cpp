@@ -19,6 +19,7 @@
 #include "player/gesture.hpp"
 #include "player/offline_render.hpp"
 #include "player/scene.hpp"
+#include "storage/export/clip_metadata.hpp"
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
 #include "storage/file_extension.hpp"
@@ -85,8 +86,8 @@ int run_render(const RenderArgs& a) {
   if (lower_extension(a.out) == ".wav") {
     sink = std::make_unique<WavSink>(a.out);
   } else if (is_clip_extension(a.out)) {  // a phone haptics clip of the drive (docs/export.md)
-    sink = std::make_unique<ClipSink>(a.out, ClipMetadata{std::string("vimg ") + cmdline::version(), a.image, "",
-                                                          "the gesture " + a.gesture + " over " + a.image, {"vibroimage"}});
+    sink = std::make_unique<ClipSink>(
+        a.out, clip_metadata(*loaded.image, a.image, a.gesture, std::string("vimg ") + cmdline::version()));
   } else {
     sink = std::make_unique<CsvSink>(a.out, a.signal);
   }

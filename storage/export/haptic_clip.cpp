@@ -129,6 +129,8 @@ std::string write_meta_haptic(const HapticClip& clip) {
   w.begin_object();
   w.key("editor");
   w.string(clip.metadata.editor);
+  w.key("author");
+  w.string(clip.metadata.author);
   w.key("source");
   w.string(clip.metadata.source);
   w.key("project");

@@ -4,7 +4,8 @@
 //   - Apple Core Haptics AHAP (`.ahap`): Version 1.0, a Pattern of HapticContinuous events (at most
 //     30 s each) with HapticIntensityControl and HapticSharpnessControl ParameterCurves of at most
 //     16 control points (times relative to the curve), and a HapticTransient per transient;
-//   - Meta Haptics Studio / Lofelt v1 (`.haptic`): version 1.0.0, metadata, and
+//   - Meta Haptics Studio / Lofelt v1 (`.haptic`): version 1.0.0, metadata (editor, author,
+//     source, project, tags, description), and
 //     signals.continuous.envelopes.amplitude [{time, amplitude[, emphasis]}] and frequency
 //     [{time, frequency}].
 // Pure text: the caller writes the file (atomically).
@@ -26,7 +27,8 @@ struct ClipTransient {
 
 struct ClipMetadata {
   std::string editor;       // e.g. "vimg 0.4.0"
-  std::string source;       // the image the clip was rendered from
+  std::string author;       // the image's author (.haptic only: AHAP has no such key)
+  std::string source;       // the image the clip was rendered from (its file name: clip_metadata.hpp)
   std::string project;
   std::string description;
   std::vector<std::string> tags;

@@ -332,7 +332,10 @@ TEST(ClipExport, AGestureOverADotAndASurfaceFollowsTheDrive) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("vimg_clip_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   for (const char* name : {"clip.ahap", "clip.haptic"}) {
-    ClipSink sink(dir / name, ClipMetadata{"vimg test", "dot_and_surface", "", "", {"test"}});
+    ClipMetadata metadata;
+    metadata.editor = "vimg test";
+    metadata.source = "dot_and_surface";
+    ClipSink sink(dir / name, metadata);
     render_gesture(*scene, gesture, sink, options);
     ASSERT_FALSE(sink.error()) << *sink.error();
     const Json json = JsonReader::parse(read_file(dir / name));
