@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "storage/csv_lines.hpp"
+#include "storage/decimal_chars.hpp"
 #include "storage/diagnostic.hpp"
 #include "storage/text_trim.hpp"
 #include "storage/limits.hpp"
@@ -38,7 +39,7 @@ bool parse_number(std::string_view s, double& out) {
     if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E')) return false;
   }
   if (s.front() == '+') s.remove_prefix(1);
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
+  const auto r = decimal_from_chars(s.data(), s.data() + s.size(), out);
   return r.ec == std::errc{} && r.ptr == s.data() + s.size() && std::isfinite(out);
 }
 
@@ -53,7 +54,7 @@ std::string quoted(std::string_view field) { return "'" + escape_input(field) + 
 
 std::string format_number(double v) {
   char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  const auto r = decimal_to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <system_error>
 
+#include "storage/decimal_chars.hpp"
+
 namespace vimg {
 
 namespace {
@@ -22,7 +24,7 @@ ParsedNumber parse_decimal(std::string_view text) {
   double value = 0.0;
   const char* begin = text.data();
   const char* end = begin + text.size();
-  const auto [ptr, ec] = std::from_chars(begin, end, value, std::chars_format::general);
+  const auto [ptr, ec] = decimal_from_chars(begin, end, value);
   if (ec == std::errc::result_out_of_range) return std::string("is out of the range of a number");
   if (ec != std::errc() || ptr != end) {
     if (text.find(',') != std::string_view::npos && ec == std::errc())
@@ -36,7 +38,7 @@ ParsedNumber parse_decimal(std::string_view text) {
 
 void append_decimal(std::string& out, double value) {
   std::array<char, 64> buffer{};
-  const auto [ptr, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  const auto [ptr, ec] = decimal_to_chars(buffer.data(), buffer.data() + buffer.size(), value);
   if (ec != std::errc()) {
     out += '0';
     return;

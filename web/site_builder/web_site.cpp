@@ -1,0 +1,146 @@
+#include "web/site_builder/web_site.hpp"
+
+#include <cstdlib>
+#include <optional>
+#include <set>
+#include <system_error>
+
+#include "hal/actuator_profile.hpp"
+#include "storage/atomic_file.hpp"
+#include "storage/image_io.hpp"
+#include "storage/read_file.hpp"
+#include "web/vsc/vsc_image.hpp"
+
+namespace vimg {
+
+namespace {
+
+// The biggest asset is the wasm (a few hundred KiB); this only guards against a wrong folder.
+constexpr std::size_t kMaxAssetBytes = std::size_t{64} << 20;
+
+Diagnostic error_of(const std::string& file, std::string message) {
+  Diagnostic d;
+  d.file = file;
+  d.message = std::move(message);
+  return d;
+}
+
+// The response the site plays with: the profile's, or the ideal actuator's.
+std::optional<ResponseParams> load_response(const WebSiteOptions& options, std::vector<Diagnostic>& out) {
+  if (options.actuator_profile.empty()) return ResponseParams{};
+  const ProfileLoadResult loaded = load_actuator_profile(options.actuator_profile);
+  for (const std::string& e : loaded.errors) out.push_back(error_of(options.actuator_profile, e));
+  if (!loaded.profile) return std::nullopt;
+  return loaded.profile->response;
+}
+
+bool make_dir(const std::filesystem::path& dir, std::vector<Diagnostic>& out) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) out.push_back(error_of(dir.string(), "cannot create the folder: " + ec.message()));
+  return !ec;
+}
+
+bool write_or_report(const std::filesystem::path& path, std::string_view bytes, std::vector<Diagnostic>& out) {
+  if (auto problem = write_file_atomically(path, bytes)) {
+    out.push_back(error_of(path.string(), *problem));
+    return false;
+  }
+  return true;
+}
+
+// Compiles one image into DIR/images/NAME.vsc; false after adding the diagnostics.
+bool write_image(const std::filesystem::path& image, const ResponseParams& response, const std::filesystem::path& out_dir,
+                 std::vector<Diagnostic>& out) {
+  LoadResult loaded = load_image_file(image);
+  const bool ok = loaded.ok();
+  for (Diagnostic& d : loaded.diagnostics) out.push_back(std::move(d));
+  if (!ok) return false;
+  const std::string bytes = write_vsc({*loaded.image, response});
+  // What the page will read must read: a name or an id beyond the .vsc limits is said here.
+  const VscReadResult check = read_vsc(bytes, image.string());
+  if (!check.image) {
+    out.push_back(error_of(image.string(), "cannot be compiled for the web: " + check.error));
+    return false;
+  }
+  if (!make_dir(out_dir / "images", out)) return false;
+  return write_or_report(out_dir / "images" / (web_image_name(image) + ".vsc"), bytes, out);
+}
+
+std::string json_string(const std::string& s) {
+  std::string q = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') q += '\\';
+    q += c;
+  }
+  return q + "\"";
+}
+
+}  // namespace
+
+std::filesystem::path web_assets_dir() {
+  if (const char* env = std::getenv("VIMG_WEB_ASSETS"); env != nullptr && *env != '\0') return env;
+#ifdef VIMG_WEB_ASSETS_DIR
+  return VIMG_WEB_ASSETS_DIR;
+#else
+  return "web-assets";
+#endif
+}
+
+std::string web_image_name(const std::filesystem::path& image) {
+  std::string name = image.stem().string();
+  for (char& c : name) {
+    const bool plain = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.' || c == '-';
+    if (!plain) c = '_';
+  }
+  if (name.empty() || name.front() == '.') name.insert(name.begin(), '_');
+  return name;
+}
+
+std::vector<Diagnostic> build_web_site(const std::vector<std::filesystem::path>& images, const WebSiteOptions& options,
+                                       const std::filesystem::path& out_dir) {
+  std::vector<Diagnostic> out;
+  const auto response = load_response(options, out);
+  if (!response) return out;
+  const std::filesystem::path assets = web_assets_dir();
+  std::vector<std::pair<std::string, std::string>> files;  // name, bytes
+  for (const char* name : kWebAssetFiles) {
+    FileReadResult read = read_regular_file(assets / name, kMaxAssetBytes);
+    if (!read.bytes) {
+      out.push_back(error_of((assets / name).string(),
+                             read.error + "; build the page with `cmake --preset web && cmake --build --preset web` "
+                                          "(or set VIMG_WEB_ASSETS to the folder holding " + name + ")"));
+      return out;
+    }
+    files.emplace_back(name, std::move(*read.bytes));
+  }
+  std::set<std::string> names;
+  for (const auto& image : images) {
+    if (!names.insert(web_image_name(image)).second)
+      out.push_back(error_of(image.string(), "another image has the same name in the site: " + web_image_name(image)));
+  }
+  if (has_errors(out) || !make_dir(out_dir, out)) return out;
+  for (const auto& [name, bytes] : files) {
+    if (!write_or_report(out_dir / name, bytes, out)) return out;
+  }
+  std::string index = "{\"images\": [";
+  bool first = true;
+  for (const auto& image : images) {
+    if (!write_image(image, *response, out_dir, out)) continue;
+    index += std::string(first ? "" : ", ") + json_string(web_image_name(image));
+    first = false;
+  }
+  index += "]}\n";
+  if (make_dir(out_dir / "images", out)) write_or_report(out_dir / "images" / "index.json", index, out);
+  return out;
+}
+
+std::vector<Diagnostic> update_web_image(const std::filesystem::path& image, const WebSiteOptions& options,
+                                         const std::filesystem::path& out_dir) {
+  std::vector<Diagnostic> out;
+  const auto response = load_response(options, out);
+  if (response) write_image(image, *response, out_dir, out);
+  return out;
+}
+
+}  // namespace vimg

@@ -1,0 +1,36 @@
+#pragma once
+// The site `vimg web` writes and `vimg serve` serves (docs/web.md): the page and the WebAssembly
+// renderer built by the `web` preset, and each image compiled to a .vsc (web/vsc/vsc_image.hpp) by
+// the native reader. Nothing in the site is fetched from elsewhere at run time.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "storage/diagnostic.hpp"
+
+namespace vimg {
+
+struct WebSiteOptions {
+  std::string actuator_profile;  // a profile file (assets/profiles/*.xml); empty: the ideal actuator
+};
+
+// The page's files, in the folder the web build wrote them to: VIMG_WEB_ASSETS if set, else the
+// folder CMake named (VIMG_WEB_ASSETS_DIR).
+std::filesystem::path web_assets_dir();
+inline constexpr const char* kWebAssetFiles[] = {"index.html", "vimg.js", "vimg.wasm", "worklet.js"};
+
+// The name an image has in the site (images/NAME.vsc): its file stem, characters other than
+// [A-Za-z0-9_.-] replaced by '_'.
+std::string web_image_name(const std::filesystem::path& image);
+
+// Writes DIR/index.html, vimg.js, vimg.wasm, worklet.js, DIR/images/NAME.vsc per image and
+// DIR/images/index.json (the names in order). Returns the diagnostics (FILE:LINE: error: ...); the
+// site is complete only when there is no error. Files are written atomically.
+std::vector<Diagnostic> build_web_site(const std::vector<std::filesystem::path>& images, const WebSiteOptions& options,
+                                       const std::filesystem::path& out_dir);
+
+// Rewrites only DIR/images/NAME.vsc of one image (a save seen by `vimg serve`).
+std::vector<Diagnostic> update_web_image(const std::filesystem::path& image, const WebSiteOptions& options,
+                                         const std::filesystem::path& out_dir);
+
+}  // namespace vimg

@@ -1,0 +1,48 @@
+// The C functions the page calls (web/site/vimg.js and worklet.js); one WebRenderer per instance.
+// Buffers passed in are owned by the caller (allocated with malloc from JavaScript); buffers
+// returned stay valid until the next call that fills them.
+#include <cstddef>
+#include <string_view>
+
+#include "web/wasm/web_renderer.hpp"
+
+namespace {
+vimg::WebRenderer& renderer() {
+  static vimg::WebRenderer r;
+  return r;
+}
+}  // namespace
+
+extern "C" {
+
+int vimg_load_vsc(const char* bytes, int size) {
+  return renderer().load_vsc(std::string_view(bytes, static_cast<std::size_t>(size))) ? 1 : 0;
+}
+const char* vimg_last_error() { return renderer().error().c_str(); }
+double vimg_canvas_width_mm() { return renderer().image().image.width_mm; }
+double vimg_canvas_height_mm() { return renderer().image().image.height_mm; }
+
+int vimg_render_gesture(const char* csv, int size, double rate_hz) {
+  if (!renderer().render_gesture(std::string_view(csv, static_cast<std::size_t>(size)), rate_hz)) return -1;
+  return static_cast<int>(renderer().rendered().size());
+}
+const float* vimg_rendered_samples() { return renderer().rendered().data(); }
+double vimg_rendered_start_s() { return renderer().rendered_start_s(); }
+
+void vimg_live_start(double rate_hz) { renderer().live_start(rate_hz); }
+// phase: 0 down, 1 move, 2 up (player/touch_event.hpp); time on the live stream's clock.
+void vimg_live_event(double time_s, int finger, int phase, double x_mm, double y_mm, double pressure) {
+  vimg::TouchEvent e;
+  e.time_s = time_s;
+  e.finger = finger;
+  e.phase = phase == 0 ? vimg::TouchPhase::down : phase == 1 ? vimg::TouchPhase::move : vimg::TouchPhase::up;
+  e.x_mm = x_mm;
+  e.y_mm = y_mm;
+  e.pressure = pressure;
+  renderer().live_event(e);
+}
+const float* vimg_live_render(int frames) { return renderer().live_render(static_cast<std::size_t>(frames)).data(); }
+double vimg_live_time_s() { return renderer().live_time_s(); }
+int vimg_live_contacts() { return static_cast<int>(renderer().live_contacts()); }
+
+}  // extern "C"

@@ -1,0 +1,60 @@
+// The renderer's JavaScript face, appended to vimg.js after Emscripten's loader (--extern-post-js),
+// so the page, the Node tests and the benchmark all call the wasm through these same few lines.
+// Nothing here models anything: every value comes from the C++ (web/wasm/exports.cpp).
+var VimgRenderer = (function () {
+  'use strict';
+  // The rate of `vimg render` when --rate is not given (cli/cmd_render.cpp).
+  var kDefaultRenderRateHz = 8000;
+
+  function VimgRenderer(module) {
+    this.module = module;
+  }
+
+  // Creates the module. `options.wasmBinary` (bytes) skips fetching vimg.wasm (Node, workers).
+  VimgRenderer.create = function (options) {
+    return createVimgModule(options || {}).then(function (module) {
+      return new VimgRenderer(module);
+    });
+  };
+
+  VimgRenderer.prototype.copyIn = function (bytes) {
+    var m = this.module;
+    var at = m._malloc(Math.max(1, bytes.length));
+    m.HEAPU8.set(bytes, at);
+    return at;
+  };
+
+  VimgRenderer.prototype.lastError = function () {
+    return this.module.UTF8ToString(this.module._vimg_last_error());
+  };
+
+  // Loads a compiled image (.vsc bytes); throws with the reader's message when it is not valid.
+  VimgRenderer.prototype.loadVsc = function (bytes) {
+    var m = this.module;
+    var at = this.copyIn(bytes instanceof Uint8Array ? bytes : new Uint8Array(bytes));
+    var ok = m._vimg_load_vsc(at, bytes.byteLength);
+    m._free(at);
+    if (!ok) throw new Error(this.lastError());
+    return { widthMm: m._vimg_canvas_width_mm(), heightMm: m._vimg_canvas_height_mm() };
+  };
+
+  // The drive of a gesture CSV as `vimg render IMAGE --gesture G --out F.csv` writes it: one sample
+  // per 1/rate s from min(0, the gesture's start). Throws with the parser's message.
+  VimgRenderer.prototype.renderGesture = function (csvText, rateHz) {
+    var m = this.module;
+    var bytes = new TextEncoder().encode(csvText);
+    var at = this.copyIn(bytes);
+    var n = m._vimg_render_gesture(at, bytes.length, rateHz || kDefaultRenderRateHz);
+    m._free(at);
+    if (n < 0) throw new Error(this.lastError());
+    var from = m._vimg_rendered_samples() >> 2;
+    return m.HEAPF32.slice(from, from + n);
+  };
+
+  VimgRenderer.prototype.renderedStartS = function () {
+    return this.module._vimg_rendered_start_s();
+  };
+
+  return VimgRenderer;
+})();
+createVimgModule.VimgRenderer = VimgRenderer;

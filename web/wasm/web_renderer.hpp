@@ -1,0 +1,58 @@
+#pragma once
+// The renderer behind the page (docs/web.md): one compiled image (.vsc), rendered either offline
+// for a gesture file, exactly as `vimg render IMAGE --gesture G --out F.csv [--actuator P]` does
+// (player/offline_render.hpp, the drive through the actuator chain), or live, block by block, from
+// pointer events (player/live_tracker.hpp and player/contact_mixer.hpp, as vimg-player does).
+// No model, default or range lives here: they are all in the C++ the native tools use.
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "player/contact_mixer.hpp"
+#include "player/live_tracker.hpp"
+#include "player/scene.hpp"
+#include "web/vsc/vsc_image.hpp"
+
+namespace vimg {
+
+class WebRenderer {
+ public:
+  // Replaces the image (the live stream goes on with the new scene). False, with error(), when the
+  // bytes are not a valid .vsc; the previous image stays.
+  bool load_vsc(std::string_view bytes);
+  bool loaded() const { return scene_ != nullptr; }
+  const VscImage& image() const { return image_; }
+  const Scene* scene() const { return scene_.get(); }
+
+  // The drive of a gesture CSV at rate_hz from the render's first sample; false with error().
+  bool render_gesture(std::string_view csv, double rate_hz);
+  const std::vector<float>& rendered() const { return rendered_; }
+  double rendered_start_s() const { return rendered_start_s_; }
+
+  // Live: start at rate_hz (time 0), take events on the stream's clock, render the next frames.
+  void live_start(double rate_hz);
+  void live_event(const TouchEvent& event) { tracker_.apply(event, live_time_s_); }
+  const std::vector<float>& live_render(std::size_t frames);
+  double live_time_s() const { return live_time_s_; }
+  std::size_t live_contacts() const { return mixer_.active_contacts(); }
+
+  const std::string& error() const { return error_; }
+
+ private:
+  VscImage image_;
+  std::shared_ptr<const Scene> scene_;
+  std::vector<float> rendered_;
+  double rendered_start_s_ = 0.0;
+  ContactMixer mixer_;
+  LiveTracker tracker_;
+  double live_rate_hz_ = 48000.0;
+  double live_time_s_ = 0.0;
+  std::uint64_t live_samples_ = 0;
+  std::vector<float> live_block_;
+  std::string error_;
+};
+
+}  // namespace vimg
