@@ -6,12 +6,15 @@ function(vimg_component name dir)
   list(FILTER sources EXCLUDE REGEX "/main\\.cpp$")
   if(sources)
     add_library(${name} STATIC ${sources})
-    target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
+    # Installed headers live under include/vibroimage/ (cmake/VimgExport.cmake).
+    target_include_directories(${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+                                              $<INSTALL_INTERFACE:include/vibroimage>)
     target_link_libraries(${name} PUBLIC ${ARG_DEPS})
     vimg_warnings(${name})
   else()
     add_library(${name} INTERFACE)
-    target_include_directories(${name} INTERFACE ${PROJECT_SOURCE_DIR})
+    target_include_directories(${name} INTERFACE $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+                                                 $<INSTALL_INTERFACE:include/vibroimage>)
     target_link_libraries(${name} INTERFACE ${ARG_DEPS})
   endif()
 endfunction()

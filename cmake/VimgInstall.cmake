@@ -72,6 +72,8 @@ elseif(VIMG_BUILD_MAN AND NOT VIMG_SANITIZE)
   message(STATUS "help2man not found: no man pages (scripts/setup.sh installs it)")
 endif()
 
+include(${PROJECT_SOURCE_DIR}/cmake/VimgExport.cmake)
+
 # The Debian package: `cpack -G DEB` in a release build folder gives vibroimage_VERSION_ARCH.deb
 # with its dependencies computed from the binaries (dpkg-shlibdeps). scripts/package_check.sh
 # installs it with apt, runs it from /usr/bin and removes it again.
