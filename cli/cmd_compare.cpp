@@ -126,7 +126,7 @@ void add_compare_command(CLI::App& vimg, int& exit_code) {
                   "8000 Hz), compared as they are")
       ->required();
   sub->add_option("--actuator", a->actuator,
-                  "actuator profile (assets/profiles/*.xml): the images are felt as its predicted acceleration; default: ideal");
+                  "actuator profile: a file, or a shipped profile's name (lra-175hz-drv2605l, erm-10mm, voice-coil-audio, ideal): the images are felt as its predicted acceleration; default: ideal");
   sub->add_option("--gesture", a->gestures,
                   "a gesture CSV to render every image under, instead of the standard exploration; repeat it for several, "
                   "rendered one after another");

@@ -68,7 +68,7 @@ void add_info_command(CLI::App& vimg, int& exit_code) {
   auto actuator = std::make_shared<std::string>();
   sub->add_option("FILE", *file, "a .vimg or .png image")->required();
   sub->add_option("--actuator", *actuator,
-                  "actuator profile (assets/profiles/*.xml): list each primitive's frequency at fullSpeed and the "
+                  "actuator profile: a file, or a shipped profile's name (lra-175hz-drv2605l, erm-10mm, voice-coil-audio, ideal): list each primitive's frequency at fullSpeed and the "
                   "actuator's response there in dB re its peak");
   sub->callback([file, actuator, &exit_code] { exit_code = run_info(*file, *actuator); });
 }

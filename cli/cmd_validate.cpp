@@ -51,7 +51,7 @@ void add_validate_command(CLI::App& vimg, int& exit_code) {
   auto a = std::make_shared<ValidateArgs>();
   sub->add_option("FILE", a->files, "images to check")->required();
   sub->add_option("--actuator", a->actuator,
-                  "actuator profile (assets/profiles/*.xml): also warn about every SURFACE and LINE whose frequency at "
+                  "actuator profile: a file, or a shipped profile's name (lra-175hz-drv2605l, erm-10mm, voice-coil-audio, ideal): also warn about every SURFACE and LINE whose frequency at "
                   "fullSpeed is more than 10 dB below the actuator's peak response (warnings keep exit 0)");
   sub->footer("Limits (docs/limits.md): " + std::to_string(kMaxImageFileBytes >> 20) + " MiB per file, " +
               std::to_string(kMaxXmlElements) + " elements and " + std::to_string(kMaxXmlAttributes) +

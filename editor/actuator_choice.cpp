@@ -31,7 +31,8 @@ bool ActuatorChoice::choose(const std::filesystem::path& path) {
   const std::vector<std::string> errors = feel_.choose(path);
   if (errors.empty()) {
     std::error_code ec;
-    const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+    // A shipped profile given by name is remembered by its file, so the next start finds it anywhere.
+    const std::filesystem::path absolute = std::filesystem::absolute(resolve_profile_argument(path), ec);
     if (!ec) remembered_.add(absolute.lexically_normal().string());
     notices_.status = "designing for " + feel_.analysis().describe();
     return true;

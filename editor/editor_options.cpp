@@ -47,7 +47,7 @@ ParsedOptions parse_editor_options(int argc, char** argv) {
           },
           "OUT"));
   app.add_option("--actuator", o.actuator,
-                 "actuator profile to design for (assets/profiles/*.xml): the scope shows its predicted acceleration "
+                 "actuator profile to design for (a file, or a shipped profile's name such as lra-175hz-drv2605l): the scope shows its predicted acceleration "
                  "and the canvas marks primitives it barely renders; default: ideal");
   app.add_option("--rate", o.sample_rate_hz, "output sample rate, Hz")->check(cmdline::finite_in(1.0, 48000.0));
   app.add_option("--recovery-dir", o.recovery_dir, "where autosave keeps the recovery file");

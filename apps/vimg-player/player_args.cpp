@@ -33,7 +33,7 @@ ArgsResult parse_player_args(const std::vector<std::string>& arguments) {
   app.add_option("--output", a.output,
                  "audio | audio:DEVICE | wav:FILE | drv2605l:/dev/i2c-1[,en=gpiochip0:17][,calibration=FILE] | "
                  "spi:/dev/spidev0.0[,mode=0][,speed=HZ] | hid:VID:PID");
-  app.add_option("--actuator", actuator, "actuator profile (assets/profiles/*.xml); default: ideal, 175 Hz");
+  app.add_option("--actuator", actuator, "actuator profile: a file, or a shipped profile's name (lra-175hz-drv2605l, erm-10mm, voice-coil-audio, ideal); default: ideal, 175 Hz");
   app.add_flag("--equalize", a.equalize,
                "shape the real-time drive so that the actuator's modelled acceleration follows the designed "
                "intensity across its band (as vimg render --equalize); nothing changes without it");
