@@ -2,14 +2,20 @@
 // Buffers passed in are owned by the caller (allocated with malloc from JavaScript); buffers
 // returned stay valid until the next call that fills them.
 #include <cstddef>
+#include <string>
 #include <string_view>
 
+#include "web/wasm/picture_json.hpp"
 #include "web/wasm/web_renderer.hpp"
 
 namespace {
 vimg::WebRenderer& renderer() {
   static vimg::WebRenderer r;
   return r;
+}
+std::string& picture() {
+  static std::string json;
+  return json;
 }
 }  // namespace
 
@@ -21,6 +27,12 @@ int vimg_load_vsc(const char* bytes, int size) {
 const char* vimg_last_error() { return renderer().error().c_str(); }
 double vimg_canvas_width_mm() { return renderer().image().image.width_mm; }
 double vimg_canvas_height_mm() { return renderer().image().image.height_mm; }
+
+// The picture of the loaded image (web/wasm/picture_json.hpp), NUL-terminated.
+const char* vimg_picture_json() {
+  picture() = vimg::picture_json(renderer().image().image);
+  return picture().c_str();
+}
 
 int vimg_render_gesture(const char* csv, int size, double rate_hz) {
   if (!renderer().render_gesture(std::string_view(csv, static_cast<std::size_t>(size)), rate_hz)) return -1;

@@ -51,6 +51,22 @@ var VimgRenderer = (function () {
     return m.HEAPF32.slice(from, from + n);
   };
 
+  // The picture to draw (web/wasm/picture_json.hpp).
+  VimgRenderer.prototype.picture = function () {
+    return JSON.parse(this.module.UTF8ToString(this.module._vimg_picture_json()));
+  };
+
+  // Live rendering on this thread (the fallback without AudioWorklet, and the vibrate mode).
+  VimgRenderer.prototype.liveStart = function (rateHz) { this.module._vimg_live_start(rateHz); };
+  VimgRenderer.prototype.liveEvent = function (finger, phase, xMm, yMm, pressure) {
+    var m = this.module;
+    m._vimg_live_event(m._vimg_live_time_s(), finger, phase, xMm, yMm, pressure);
+  };
+  VimgRenderer.prototype.liveRender = function (frames) {
+    var at = this.module._vimg_live_render(frames) >> 2;
+    return this.module.HEAPF32.subarray(at, at + frames);
+  };
+
   VimgRenderer.prototype.renderedStartS = function () {
     return this.module._vimg_rendered_start_s();
   };

@@ -1,0 +1,20 @@
+// node bench/web_render_bench.mjs SITE_DIR IMAGE.vsc GESTURE.csv [REPEATS]
+// The wasm render cost per sample (renderGesture at 48 kHz, the page's path) for comparison with
+// the native `vimg render` of the same gesture (docs/benchmarks.md, "WebAssembly").
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import path from 'node:path';
+
+const [siteDir, vscPath, gesturePath, repeatsArg] = process.argv.slice(2);
+const repeats = Number(repeatsArg || 10);
+const require = createRequire(import.meta.url);
+const createVimgModule = require(path.resolve(siteDir, 'vimg.js'));
+const r = await createVimgModule.VimgRenderer.create({ wasmBinary: readFileSync(path.join(siteDir, 'vimg.wasm')) });
+r.loadVsc(readFileSync(vscPath));
+const csv = readFileSync(gesturePath, 'utf8');
+r.renderGesture(csv, 48000);  // warm up (compile tiers)
+let samples = 0;
+const t0 = process.hrtime.bigint();
+for (let i = 0; i < repeats; ++i) samples += r.renderGesture(csv, 48000).length;
+const ns = Number(process.hrtime.bigint() - t0);
+console.log(`wasm: ${samples} samples in ${(ns / 1e6).toFixed(1)} ms: ${(ns / samples).toFixed(1)} ns per sample`);

@@ -1,0 +1,92 @@
+// The AudioWorklet: renders 128-frame blocks at the AudioContext's rate with the same wasm as the
+// page (vimg.wasm, instantiated here from the bytes the page posts: Emscripten's loader does not run
+// in a worklet). Pointer events are applied at the start of the next block (no buffering beyond the
+// browser's own block). Messages in: {type:'init', wasm, vsc}, {type:'vsc', bytes},
+// {type:'event', finger, phase, x, y, pressure, id}. Out: {type:'ready'}, {type:'scope', samples,
+// contacts, eventIds}.
+'use strict';
+
+class VimgProcessor extends AudioWorkletProcessor {
+  constructor() {
+    super();
+    this.exports = null;
+    this.pending = [];
+    this.scope = new Float32Array(1024);
+    this.scopeAt = 0;
+    this.blocks = 0;
+    this.eventIds = [];
+    this.port.onmessage = (e) => this.onMessage(e.data);
+  }
+
+  instantiate(bytes) {
+    let memory = null;
+    const env = {
+      emscripten_memcpy_big: (dest, src, n) => new Uint8Array(memory.buffer).copyWithin(dest, src, src + n),
+      emscripten_resize_heap: (size) => {
+        const pages = Math.ceil((size - memory.buffer.byteLength) / 65536);
+        try { memory.grow(pages); return 1; } catch (err) { return 0; }
+      },
+      abort: () => { throw new Error('vimg.wasm aborted'); },
+      __cxa_allocate_exception: () => { throw new Error('vimg.wasm threw'); },
+      __cxa_throw: () => { throw new Error('vimg.wasm threw'); },
+    };
+    const instance = new WebAssembly.Instance(new WebAssembly.Module(bytes), { env });
+    memory = instance.exports.memory;
+    instance.exports.__wasm_call_ctors();
+    this.exports = instance.exports;
+    this.memory = memory;
+  }
+
+  loadVsc(bytes) {
+    const x = this.exports;
+    const view = new Uint8Array(bytes);
+    const at = x.malloc(Math.max(1, view.length));
+    new Uint8Array(this.memory.buffer).set(view, at);
+    const ok = x.vimg_load_vsc(at, view.length);
+    x.free(at);
+    return ok === 1;
+  }
+
+  onMessage(m) {
+    if (m.type === 'init') {
+      this.instantiate(m.wasm);
+      this.exports.vimg_live_start(sampleRate);
+      if (m.vsc) this.loadVsc(m.vsc);
+      this.port.postMessage({ type: 'ready', sampleRate });
+    } else if (m.type === 'vsc' && this.exports) {
+      this.loadVsc(m.bytes);
+    } else if (m.type === 'event') {
+      this.pending.push(m);
+    }
+  }
+
+  process(inputs, outputs) {
+    const out = outputs[0];
+    if (!this.exports || out.length === 0) return true;
+    const x = this.exports;
+    for (const e of this.pending) {
+      x.vimg_live_event(x.vimg_live_time_s(), e.finger, e.phase, e.x, e.y, e.pressure);
+      if (e.id !== undefined) this.eventIds.push(e.id);
+    }
+    this.pending.length = 0;
+    const frames = out[0].length;
+    const at = x.vimg_live_render(frames) >> 2;
+    const block = new Float32Array(this.memory.buffer, at, frames);
+    for (const channel of out) channel.set(block);
+    for (let i = 0; i < frames; ++i) {
+      this.scope[this.scopeAt] = block[i];
+      this.scopeAt = (this.scopeAt + 1) % this.scope.length;
+    }
+    // The first block that carries an event's effect reports it (the latency benchmark reads this).
+    if (this.eventIds.length > 0 || ++this.blocks % 8 === 0) {
+      let peak = 0;
+      for (let i = 0; i < frames; ++i) peak = Math.max(peak, Math.abs(block[i]));
+      this.port.postMessage({ type: 'scope', samples: this.scope.slice(), at: this.scopeAt, peak,
+                              contacts: x.vimg_live_contacts(), eventIds: this.eventIds, time: currentTime });
+      this.eventIds = [];
+    }
+    return true;
+  }
+}
+
+registerProcessor('vimg-processor', VimgProcessor);
