@@ -85,6 +85,7 @@ void EditorApp::frame() {
 
   const DocumentEditor& doc = session_.editor();
   playback_.follow(doc.image(), doc.change_count());
+  playback_.show_device_messages();
   if (options_.benchmark_frames == 0) {
     const double now = monotonic_s();
     if (auto status = session_.autosave_if_due(now)) notices_.status = *status;

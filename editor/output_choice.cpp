@@ -15,22 +15,6 @@ class DiscardSink final : public DriveSink {
   void close() override {}
 };
 
-// A hal output (its devices and its sink) as one DriveSink.
-class HalOutputSink final : public DriveSink {
- public:
-  explicit HalOutputSink(std::unique_ptr<Output> output) : output_(std::move(output)) {}
-  void open(double sample_rate_hz) override { output_->sink().open(sample_rate_hz); }
-  void write(std::span<const float> drive, double block_start_time_s) override {
-    output_->sink().write(drive, block_start_time_s);
-  }
-  void close() override { output_->sink().close(); }
-  bool paces_stream() const override { return output_->sink().paces_stream(); }
-  std::size_t min_block_samples() const override { return output_->sink().min_block_samples(); }
-
- private:
-  std::unique_ptr<Output> output_;
-};
-
 }  // namespace
 
 OutputChoiceResult parse_output_choice(const std::string& text) {
@@ -52,14 +36,14 @@ OutputChoiceResult parse_output_choice(const std::string& text) {
   return {c, ""};
 }
 
-std::unique_ptr<DriveSink> make_output(const OutputChoice& choice, std::string& error) {
+std::unique_ptr<PlayOutput> make_output(const OutputChoice& choice, std::string& error) {
   switch (choice.kind) {
-    case OutputChoice::Kind::none: return std::make_unique<DiscardSink>();
-    case OutputChoice::Kind::csv: return std::make_unique<CsvSink>(choice.csv_path);
+    case OutputChoice::Kind::none: return play_output(std::make_unique<DiscardSink>());
+    case OutputChoice::Kind::csv: return play_output(std::make_unique<CsvSink>(choice.csv_path));
     case OutputChoice::Kind::hal: break;
   }
   try {
-    return std::make_unique<HalOutputSink>(open_output(choice.hal_spec, default_lra_profile()));
+    return play_output(open_output(choice.hal_spec, default_lra_profile()));
   } catch (const std::exception& e) {
     error = e.what();
     return nullptr;

@@ -6,8 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "editor/core/play_output.hpp"
 #include "hal/output_spec.hpp"
-#include "player/drive_sink.hpp"
 
 namespace vimg::editor {
 
@@ -26,6 +26,6 @@ struct OutputChoiceResult {
 OutputChoiceResult parse_output_choice(const std::string& text);
 
 // Opens the output; null with `error` set (naming the device) when it cannot.
-std::unique_ptr<DriveSink> make_output(const OutputChoice& choice, std::string& error);
+std::unique_ptr<PlayOutput> make_output(const OutputChoice& choice, std::string& error);
 
 }  // namespace vimg::editor

@@ -15,6 +15,7 @@
 
 #include "editor/core/gesture_recorder.hpp"
 #include "editor/core/drive_tap.hpp"
+#include "editor/core/play_output.hpp"
 #include "player/drive_sink.hpp"
 #include "player/realtime_renderer.hpp"
 #include "primitives/image.hpp"
@@ -30,7 +31,7 @@ struct TrailPoint {
 class PlaySession {
  public:
   // Makes the output the renderer drives, anew for every start (see output_choice.hpp).
-  using OutputFactory = std::function<std::unique_ptr<DriveSink>(std::string& error)>;
+  using OutputFactory = std::function<std::unique_ptr<PlayOutput>(std::string& error)>;
   static constexpr int kDefaultRealtimePriority = 80;
   // realtime_priority: SCHED_FIFO priority of the render thread (1..99), 0 for normal scheduling.
   PlaySession(OutputFactory make_output, double sample_rate_hz, int realtime_priority = kDefaultRealtimePriority);
@@ -46,6 +47,9 @@ class PlaySession {
   // Stops the renderer and completes the output (a WAV file is written here).
   void stop();
   bool playing() const { return renderer_ && renderer_->running(); }
+  // What the output's device said since the last call (faults, a device gone and back), also after
+  // stop() (its last faults); nothing before the first start.
+  std::vector<std::string> take_device_messages() { return output_ ? output_->take_messages() : std::vector<std::string>{}; }
 
   // Input from the GUI thread; time on the renderer's clock (monotonic_s()).
   void touch(int finger, TouchPhase phase, double x_mm, double y_mm, double time_s);
@@ -72,7 +76,7 @@ class PlaySession {
 
  private:
   OutputFactory make_output_;
-  std::unique_ptr<DriveSink> output_;
+  std::unique_ptr<PlayOutput> output_;
   std::unique_ptr<DriveTap> tap_;
   std::unique_ptr<RealtimeRenderer> renderer_;
   double sample_rate_hz_;

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "editor/canvas_view.hpp"
+#include "editor/core/device_messages.hpp"
 #include "editor/core/geometry.hpp"
 #include "editor/core/layout_log.hpp"
 #include "storage/palette.hpp"
@@ -52,6 +53,7 @@ void Playback::set_on(bool on, const Image& image) {
   if (!play_) return;
   play_->stop();
   notices_.status = "drawing";
+  show_device_messages();  // the last faults of the session, drained by the stop
   if (const DriveTap* tap = play_->tap()) {
     std::vector<double> lat = tap->latencies_s();
     if (!lat.empty()) {
@@ -63,6 +65,12 @@ void Playback::set_on(bool on, const Image& image) {
   if (!options_.record_gesture.empty() && play_->recording()) {
     if (auto error = play_->recorded_gesture().save(options_.record_gesture)) notices_.report_error(*error);
   }
+}
+
+void Playback::show_device_messages() {
+  if (!play_) return;
+  editor::show_device_messages(play_->take_device_messages(), on_ ? "playing to " + options_.output.text : "drawing",
+                               notices_);
 }
 
 void Playback::follow(const Image& image, std::uint64_t change_count) {

@@ -42,6 +42,9 @@ class Playback {
   // Starts playing `image` (true) or stops (false, writing the recorded gesture when
   // --record-gesture asked for it). A failure to start is reported and leaves drawing mode.
   void set_on(bool on, const Image& image);
+  // What the output's device said since the last frame (a DRV2605L or HID fault, a device gone and
+  // back) to stderr and the status bar (core/device_messages.hpp); every frame, and at a stop.
+  void show_device_messages();
   // The document changed (change_count): play it from now on.
   void follow(const Image& image, std::uint64_t change_count);
 
