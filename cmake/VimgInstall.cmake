@@ -18,6 +18,11 @@ foreach(sub ${VIMG_DATA_SUBDIRS})
     file(CREATE_LINK ${PROJECT_SOURCE_DIR}/assets/${sub} ${PROJECT_BINARY_DIR}/share/vibroimage/${sub} SYMBOLIC)
   endif()
 endforeach()
+# The web player (page, vimg.js, vimg.wasm) is the `web` preset's output (docs/web.md); the link may
+# dangle until that build has run, and `vimg web` says how to build it.
+if(DEFINED VIMG_WEB_ASSETS_DIR AND NOT IS_SYMLINK ${PROJECT_BINARY_DIR}/share/vibroimage/web)
+  file(CREATE_LINK ${VIMG_WEB_ASSETS_DIR} ${PROJECT_BINARY_DIR}/share/vibroimage/web SYMBOLIC)
+endif()
 
 set(vimg_programs vimg vimg-force vimg-editor vimg-player vimg-probe)
 set(vimg_installed_programs "")
@@ -31,6 +36,10 @@ install(TARGETS ${vimg_installed_programs} RUNTIME DESTINATION ${CMAKE_INSTALL_B
 foreach(sub ${VIMG_DATA_SUBDIRS})
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/assets/${sub} DESTINATION ${CMAKE_INSTALL_DATADIR}/vibroimage)
 endforeach()
+if(DEFINED VIMG_WEB_ASSETS_DIR)
+  install(DIRECTORY ${VIMG_WEB_ASSETS_DIR}/ DESTINATION ${CMAKE_INSTALL_DATADIR}/vibroimage/web OPTIONAL
+          FILES_MATCHING PATTERN "*.html" PATTERN "*.js" PATTERN "*.wasm")
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 

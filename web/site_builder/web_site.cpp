@@ -1,5 +1,7 @@
 #include "web/site_builder/web_site.hpp"
 
+#include "storage/shipped_data.hpp"
+
 #include <cstdlib>
 #include <optional>
 #include <set>
@@ -80,11 +82,9 @@ std::string json_string(const std::string& s) {
 
 std::filesystem::path web_assets_dir() {
   if (const char* env = std::getenv("VIMG_WEB_ASSETS"); env != nullptr && *env != '\0') return env;
-#ifdef VIMG_WEB_ASSETS_DIR
-  return VIMG_WEB_ASSETS_DIR;
-#else
-  return "web-assets";
-#endif
+  // Installed: PREFIX/share/vibroimage/web; in the build tree a link to the web build's output.
+  if (const auto data = shipped_data_dir()) return *data / "web";
+  return "web";
 }
 
 std::string web_image_name(const std::filesystem::path& image) {
