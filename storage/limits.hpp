@@ -79,6 +79,12 @@ inline constexpr std::size_t kMaxCompareInputs = 32;  // inputs of one compariso
 inline constexpr int kMaxPictureLevels = 16;                // grey levels of a picture import
 inline constexpr double kMaxImportCoordinateMm = 1e9;       // |coordinate| of an SVG shape after its transforms
 inline constexpr double kMaxPictureContainmentTests = 4e8;  // outline edges visited placing a picture's holes
+// Primitives and groups an import may give: the written image's other two elements are its XML
+// declaration and its <vibroimage> root (an SVG title takes two more: <meta> and its <title>).
+inline constexpr std::size_t kMaxImportPrimitives = kMaxXmlElements - 2;
+// Points an SVG import may flatten in all, counted as they are produced: a written image holds a
+// point in about 16 bytes, so more would not fit the largest image file (4 194 304).
+inline constexpr std::size_t kMaxImportPoints = kMaxImageFileBytes / 16;
 
 // --- Studies (storage/study: study files and trial files; docs/limits.md "Studies") ----------------
 inline constexpr std::size_t kMaxStudyFileBytes = 1 * kMiB / kLimitScale;  // a matching or location study file

@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <string>
 #include <vector>
 
 #include "storage/import/import.hpp"
 #include "storage/import/svg_attributes.hpp"
+#include "storage/import/svg_ids.hpp"
 #include "storage/import/svg_path.hpp"
 #include "storage/import/svg_shapes.hpp"
 #include "storage/import/svg_transform.hpp"
@@ -88,6 +88,9 @@ class SvgImporter {
     }
     Affine root_map;
     if (!canvas(*root, root_map)) return finish();
+    for (const XMLElement* e = root->FirstChildElement(); e != nullptr; e = e->NextSiblingElement()) {
+      if (local_name(e->Name()) == "title" && e->GetText() != nullptr) title_elements_ = 2;
+    }
     Style style;
     walk(*root, root_map, cascade(*root, style), 0, image_.children);
     return finish();
@@ -180,26 +183,14 @@ class SvgImporter {
     return s;
   }
 
-  std::string unique_id(const char* raw) {
-    if (raw == nullptr || *raw == '\0') return {};
-    std::string id;
-    for (const char* p = raw; *p != '\0' && id.size() < 64; ++p) {
-      const char c = *p;
-      const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_' ||
-                      (!id.empty() && ((c >= '0' && c <= '9') || c == '.' || c == '-'));
-      if (id.empty() && c >= '0' && c <= '9') id += '_';
-      id += ok || (c >= '0' && c <= '9') ? c : '_';
-    }
-    std::string candidate = id;
-    for (int n = 2; !ids_.insert(candidate).second; ++n) candidate = id + "-" + std::to_string(n);
-    return candidate;
-  }
-
+  // Elements the image will hold, counted as each shape gives them: primitives and groups, and the
+  // <meta> and <title> a drawing's title becomes, within kMaxImportPrimitives (storage/limits.hpp).
+  std::size_t primitive_budget() const { return kMaxImportPrimitives - title_elements_; }
   bool take_budget(const XMLElement& e, std::size_t count) {
     primitives_ += count;
-    if (primitives_ + 1 > kMaxXmlElements) {
-      diagnostics_.error(e.GetLineNum(), "the drawing gives more than " + std::to_string(kMaxXmlElements - 1) +
-                                             " primitives (limit " + std::to_string(kMaxXmlElements - 1) + ")");
+    if (primitives_ > primitive_budget()) {
+      const std::string limit = std::to_string(primitive_budget());
+      diagnostics_.error(e.GetLineNum(), "the drawing gives more than " + limit + " primitives and groups (limit " + limit + ")");
       return false;
     }
     return true;
@@ -247,20 +238,24 @@ class SvgImporter {
     if (style.fill && style.fill_is_server && !g.lines_only) warn(e, "fill is a gradient or pattern: imported as a plain surface");
     if (style.stroke && style.dashed) warn(e, "stroke-dasharray is not imported: the stroke becomes a solid line");
     svg::ShapeSettings settings{ctm, style, options_.tolerance_mm, options_.dot_max_radius_mm, kMaxPolygonPoints};
+    settings.points_left = kMaxImportPoints - points_;
+    settings.primitives_left = primitive_budget() - std::min(primitive_budget(), primitives_);
     svg::ShapeOutput shape = svg::convert_shape(g, settings);
+    points_ += shape.points;
     for (const std::string& w : shape.warnings) warn(e, w);
     if (!shape.error.empty()) return diagnostics_.error(e.GetLineNum(), shape.error);
     // One primitive stands alone; several go into a group, which is an element too.
-    const std::size_t elements = shape.primitives.size() + (shape.primitives.size() > 1 ? 1 : 0);
-    if (shape.primitives.empty() || !take_budget(e, elements)) return;
+    const std::size_t elements = shape.over_primitives ? settings.primitives_left + 1
+                                                       : shape.primitives.size() + (shape.primitives.size() > 1 ? 1 : 0);
+    if (elements == 0 || !take_budget(e, elements)) return;
     for (Element& p : shape.primitives) p.source_line = e.GetLineNum();
     if (shape.primitives.size() == 1) {
-      shape.primitives.front().id = unique_id(e.Attribute("id"));
+      shape.primitives.front().id = ids_.take(e.Attribute("id"));
       out.push_back(std::move(shape.primitives.front()));
       return;
     }
     Element wrapper;
-    wrapper.id = unique_id(e.Attribute("id"));
+    wrapper.id = ids_.take(e.Attribute("id"));
     wrapper.source_line = e.GetLineNum();
     Group chain;
     if (const char* id = e.Attribute("id")) chain.name = id;
@@ -277,19 +272,20 @@ class SvgImporter {
 
   void group(const XMLElement& e, const Affine& ctm, const Style& style, int depth, std::vector<Element>& out) {
     if (depth + 1 > kMaxGroupDepth) return group_too_deep(e);
+    const char* id = e.Attribute("id");
+    std::string unique = ids_.take(id);  // before the children's: the first in document order keeps an id
     Group g;
     walk(e, ctm, style, depth + 1, g.children);
-    if (g.children.empty()) return;  // an empty group (e.g. an unused layer) has nothing to feel
+    if (g.children.empty()) return ids_.release(unique);  // an empty group (e.g. an unused layer) has nothing to feel
     if (!take_budget(e, 1)) return;
     const char* label = e.Attribute("inkscape:label");
-    const char* id = e.Attribute("id");
     if (label != nullptr) {
       g.name = label;
     } else if (id != nullptr) {
       g.name = id;
     }
     Element element;
-    element.id = unique_id(id);
+    element.id = std::move(unique);
     element.source_line = e.GetLineNum();
     element.body = std::move(g);
     out.push_back(std::move(element));
@@ -379,7 +375,9 @@ class SvgImporter {
   DiagnosticList diagnostics_;
   const ImportOptions& options_;
   Image image_;
-  std::set<std::string> ids_;
+  svg::UniqueIds ids_;
+  std::size_t title_elements_ = 0;  // 2 when the drawing has a title: <meta> and its <title>
+  std::size_t points_ = 0;          // points flattened so far, within kMaxImportPoints
   std::size_t primitives_ = 0;
 };
 

@@ -40,22 +40,34 @@ struct Converter {
     return w > 0.0 && std::isfinite(w) ? w : Line{}.width_mm;
   }
 
+  // Flattens within both budgets, counting points as they are produced: the element's (max_points)
+  // and the whole import's (points_left, kMaxImportPoints), so that no outline grows past either.
   bool flatten(const Subpath& sp, import::Ring& points) {
-    const std::size_t room = s.max_points > points_used ? s.max_points - points_used : 0;
-    if (!flatten_subpath(sp, s.ctm, s.tolerance_mm, room, points)) {
-      out.error = "the flattened outline has more than " + std::to_string(s.max_points) + " points (limit " +
-                  std::to_string(s.max_points) + ")";
-      return false;
-    }
+    const std::size_t element_room = s.max_points > points_used ? s.max_points - points_used : 0;
+    const std::size_t import_room = s.points_left > points_used ? s.points_left - points_used : 0;
+    const bool import_bound = import_room < element_room;
+    const bool fits = flatten_subpath(sp, s.ctm, s.tolerance_mm, std::min(element_room, import_room), points);
     points_used += points.size();
-    return true;
+    out.points = points_used;
+    if (fits) return true;
+    out.error = import_bound ? "the drawing's curves and outlines flatten to more than " +
+                                   std::to_string(kMaxImportPoints) + " points in all (limit " +
+                                   std::to_string(kMaxImportPoints) + ")"
+                             : "the flattened outline has more than " + std::to_string(s.max_points) +
+                                   " points (limit " + std::to_string(s.max_points) + ")";
+    return false;
   }
 
-  void chain(import::Ring points, bool closed) {
+  // LINEs within primitives_left, counted as they are made; false (over_primitives) beyond.
+  bool chain(import::Ring points, bool closed) {
     import::remove_repeats(points, closed);
     if (closed && points.size() > 2) points.push_back(points.front());
     const double width = line_width_mm();
     for (std::size_t i = 1; i < points.size(); ++i) {
+      if (out.primitives.size() >= s.primitives_left) {
+        out.over_primitives = true;
+        return false;
+      }
       Line l;
       l.x1_mm = points[i - 1].x;
       l.y1_mm = points[i - 1].y;
@@ -64,6 +76,7 @@ struct Converter {
       l.width_mm = width;
       out.primitives.push_back(primitive(l));
     }
+    return true;
   }
 
   bool try_dot() {
@@ -160,8 +173,7 @@ struct Converter {
     if (g.lines_only) {
       for (const Subpath& sp : g.subpaths) {
         import::Ring points;
-        if (!flatten(sp, points)) return;
-        chain(std::move(points), sp.closed);
+        if (!flatten(sp, points) || !chain(std::move(points), sp.closed)) return;
       }
       return;
     }
@@ -177,8 +189,7 @@ struct Converter {
       // Open subpaths are LINE chains whether filled or stroked; closed ones only when stroked.
       if (!st.stroke && sp.closed) continue;
       import::Ring points;
-      if (!flatten(sp, points)) return;
-      chain(std::move(points), sp.closed);
+      if (!flatten(sp, points) || !chain(std::move(points), sp.closed)) return;
     }
   }
 };

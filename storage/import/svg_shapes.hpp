@@ -30,12 +30,16 @@ struct ShapeSettings {
   double tolerance_mm = 0.05;
   double dot_max_radius_mm = 2.0;
   std::size_t max_points = 0;     // points of one flattened element, at most
+  std::size_t points_left = static_cast<std::size_t>(-1);      // points the whole import may still flatten
+  std::size_t primitives_left = static_cast<std::size_t>(-1);  // primitives the whole import may still give
 };
 
 struct ShapeOutput {
   std::vector<Element> primitives;  // in paint order: the surface, then its outline
   std::vector<std::string> warnings;
   std::string error;                // a limit was exceeded; primitives are then incomplete
+  std::size_t points = 0;           // points flattened, counted as they were produced
+  bool over_primitives = false;     // stopped at primitives_left: primitives are then incomplete
 };
 
 ShapeOutput convert_shape(const ShapeGeometry& geometry, const ShapeSettings& settings);

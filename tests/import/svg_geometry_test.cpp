@@ -4,10 +4,13 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 
 #include "primitives/geometry/hit_test.hpp"
 #include "storage/import/svg_attributes.hpp"
 #include "storage/import/svg_flatten.hpp"
+#include "storage/import/svg_shapes.hpp"
+#include "storage/limits.hpp"
 #include "storage/import/svg_transform.hpp"
 
 namespace vimg::svg {
@@ -136,6 +139,29 @@ TEST(SvgFlatten, PointBudgetIsEnforced) {
   std::vector<Vec2> points;
   EXPECT_FALSE(flatten_subpath(s, Affine{}, 1e-6, 10, points));
   EXPECT_LE(points.size(), 10u);
+}
+
+TEST(SvgShapes, AShapeStopsAtTheImportsBudgetsAsItProducesPointsAndLines) {
+  // A stroked curve some 3e6 mm across: tens of thousands of points and LINEs within 0.05 mm.
+  ShapeGeometry g;
+  Subpath curve;
+  curve.segments.push_back({PathSegment::Kind::cubic, {3e6, 3e6}, {-3e6, 3e6}, {1, 0}});
+  g.subpaths.push_back(curve);
+  ShapeSettings settings;
+  settings.style.fill = false;
+  settings.style.stroke = true;
+  settings.max_points = 100'000;
+  settings.primitives_left = 100;
+  const ShapeOutput lines = convert_shape(g, settings);
+  EXPECT_TRUE(lines.over_primitives);
+  EXPECT_EQ(lines.primitives.size(), 100u);  // not one LINE more than the import may still hold
+  settings.primitives_left = static_cast<std::size_t>(-1);
+  settings.points_left = 1000;
+  const ShapeOutput points = convert_shape(g, settings);
+  EXPECT_LE(points.points, 1000u);
+  EXPECT_TRUE(points.primitives.empty());
+  const std::string limit = std::to_string(kMaxImportPoints);
+  EXPECT_EQ(points.error, "the drawing's curves and outlines flatten to more than " + limit + " points in all (limit " + limit + ")");
 }
 
 }  // namespace

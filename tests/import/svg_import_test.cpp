@@ -173,6 +173,53 @@ TEST(SvgImport, NonzeroFillKeepsSameDirectionNestingFilledAndOppositeDirectionAH
   EXPECT_FALSE(contains(polygon_of(even_odd), {30, 30}));
 }
 
+TEST(SvgImport, NonzeroBeyondAThousandSubpathsIsFilledEvenOddWithAWarning) {
+  // Nested squares all turning the same way: nonzero fills everything inside the outermost, even-odd
+  // every other band. docs/import.md: beyond 1000 subpaths the path is filled even-odd, with a warning.
+  const auto nested = [](int count) {
+    std::string d;
+    for (int k = 0; k < count; ++k) {
+      const std::string a = std::to_string(0.01 + 0.04 * k), b = std::to_string(99.99 - 0.04 * k);
+      d += "M" + a + " " + a + " H" + b + " V" + b + " H" + a + " Z ";
+    }
+    return svg_mm("<path id='p' d='" + d + "'/>");
+  };
+  const auto polygon_of = [](const ImportResult& r) {
+    Polygon p;
+    for (const Point2Mm& q : std::get<Surface>(find(r.image->children, "p")->body).points) p.vertices.push_back({q.x_mm, q.y_mm});
+    return p;
+  };
+  const Vec2 in_two_squares{0.07, 50.0};
+  const ImportResult at_limit = import_text(nested(1000));
+  ASSERT_TRUE(at_limit.ok()) << warnings_of(at_limit);
+  EXPECT_EQ(warnings_of(at_limit).find("even-odd"), std::string::npos) << warnings_of(at_limit);
+  EXPECT_TRUE(contains(polygon_of(at_limit), in_two_squares));
+  const ImportResult over = import_text(nested(1001));
+  ASSERT_TRUE(over.ok()) << warnings_of(over);
+  EXPECT_NE(warnings_of(over).find("t.svg:2: warning: <path> fill-rule nonzero with more than 1000 subpaths: filled by the "
+                                   "even-odd rule"),
+            std::string::npos)
+      << warnings_of(over);
+  EXPECT_FALSE(contains(polygon_of(over), in_two_squares));
+}
+
+TEST(SvgImport, AShapeBeyondABillionMillimetresIsAWarningAndNotImported) {
+  // docs/import.md, docs/limits.md kMaxImportCoordinateMm: 1e9 mm after the transforms.
+  const ImportResult r = import_text(svg_mm(R"svg(<rect id="within" width="10" height="10" transform="scale(9e7)"/>
+<rect id="beyond" width="10" height="10" transform="scale(2e8)"/>
+<path id="far" d="M0 0 L1 1 L2e9 0 Z"/>)svg"));
+  ASSERT_TRUE(r.ok()) << warnings_of(r);
+  EXPECT_NE(find(r.image->children, "within"), nullptr);
+  EXPECT_EQ(find(r.image->children, "beyond"), nullptr);
+  EXPECT_EQ(find(r.image->children, "far"), nullptr);
+  for (const char* line : {"t.svg:3: warning: <rect>", "t.svg:4: warning: <path>"}) {
+    EXPECT_NE(warnings_of(r).find(std::string(line) + " has coordinates beyond 1e9 mm (or not finite) after its transforms: "
+                                  "not imported"),
+              std::string::npos)
+        << line << "\n" << warnings_of(r);
+  }
+}
+
 TEST(SvgImport, PhysicalUnitsComeFromWidthHeightAndViewBox) {
   const std::string rect = "<rect id='r' x='10' y='10' width='10' height='10'/>";
   // 2 in wide, viewBox 0..100: a user unit is 0.508 mm.

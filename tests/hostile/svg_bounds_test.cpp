@@ -1,0 +1,114 @@
+// SVG drawings built to hurt the importer (issue 23, "Imports built to hurt"), each run in a child
+// under an address-space and a CPU cap (bounded_child.hpp): the import finishes inside them, or is
+// refused with the limit it reached named (`FILE:LINE: error: ... (limit N)`), never "out of memory"
+// and never killed. And the documented largest drawing imports and reads back, one more is refused
+// naming the drawing and the limit (docs/import.md "Limits", docs/limits.md "Import").
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "storage/image_io.hpp"
+#include "storage/import/import.hpp"
+#include "storage/limits.hpp"
+#include "tests/hostile/bounded_child.hpp"
+
+namespace vimg {
+namespace {
+
+constexpr std::size_t kMemoryCapBytes = std::size_t{512} << 20;
+constexpr int kCpuCapSeconds = 30;
+
+// 100 x 100 mm, one user unit a millimetre; `count` copies of `shape`, one a line (line n + 1).
+std::string svg_of(std::size_t count, const std::string& shape, const std::string& head = "") {
+  std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='100mm' height='100mm' viewBox='0 0 100 100'>" + head + "\n";
+  svg.reserve(count * (shape.size() + 1) + 200);
+  for (std::size_t i = 0; i < count; ++i) svg += shape + "\n";
+  return svg + "</svg>\n";
+}
+
+std::string errors_of(const ImportResult& r) {
+  std::string out;
+  for (const Diagnostic& d : r.diagnostics) {
+    if (d.severity == Diagnostic::Severity::error) out += d.to_string() + "\n";
+  }
+  return out;
+}
+
+void collect_ids(const std::vector<Element>& elements, std::set<std::string>& ids) {
+  for (const Element& e : elements) {
+    ids.insert(e.id);
+    if (const auto* g = std::get_if<Group>(&e.body)) collect_ids(g->children, ids);
+  }
+}
+
+TEST(SvgBounds, FiftyThousandElementsSharingOneIdImportWithinTheCaps) {
+  // Each copy used to try "dup-2", "dup-3", ... from the start: 1.25e9 set look-ups for 50 000.
+  const std::size_t count = 50'000;
+  const std::string svg = svg_of(count, "<circle id='dup' cx='5' cy='5' r='0.5'/>");
+  const test::ChildOutcome outcome = test::run_bounded(
+      [&] {
+        const ImportResult r = import_svg(svg, "ids.svg", {});
+        if (!r.ok()) return "refused: " + errors_of(r);
+        std::set<std::string> ids;
+        collect_ids(r.image->children, ids);
+        const bool first_keeps_it = r.image->children.front().id == "dup";
+        const bool last_numbered = r.image->children.back().id == "dup-" + std::to_string(count);
+        return std::to_string(ids.size()) + " ids" + (first_keeps_it ? ", the first 'dup'" : "") +
+               (last_numbered ? ", the last 'dup-50000'" : "");
+      },
+      kMemoryCapBytes, kCpuCapSeconds);
+  ASSERT_TRUE(outcome.finished()) << outcome.describe();
+  EXPECT_EQ(outcome.output, "50000 ids, the first 'dup', the last 'dup-50000'");
+}
+
+TEST(SvgBounds, ArcsOfEnormousRadiusAreRefusedAtThePointLimitWithinTheCaps) {
+  // Each arc is the large way round a circle of 10 km: some 65 500 points within 0.05 mm, under
+  // the limit of one outline, but 20 000 of them are 21 GB of points ("out of memory" under the
+  // cap, before). Counted as they are produced, the import stops at kMaxImportPoints, at the line
+  // of the element that reached it (the 64th).
+  const std::string svg = svg_of(20'000, "<path d='M0,0 A1e7,1e7 0 1 1 1,0 Z'/>");
+  const test::ChildOutcome outcome = test::run_bounded(
+      [&] {
+        const ImportResult r = import_svg(svg, "arcs.svg", {});
+        return r.ok() ? std::string("imported") : errors_of(r);
+      },
+      kMemoryCapBytes, kCpuCapSeconds);
+  ASSERT_TRUE(outcome.finished()) << outcome.describe();
+  const std::string limit = std::to_string(kMaxImportPoints);
+  EXPECT_NE(outcome.output.find("arcs.svg:"), std::string::npos) << outcome.output;
+  EXPECT_NE(outcome.output.find(": error: the drawing's curves and outlines flatten to more than " + limit +
+                                " points in all (limit " + limit + ")"),
+            std::string::npos)
+      << outcome.output;
+  EXPECT_EQ(outcome.output.find("arcs.svg: error:"), std::string::npos) << "the line is named: " << outcome.output;
+}
+
+TEST(SvgBounds, TheDocumentedMostPrimitivesImportAndReadBackAndOneMoreIsRefusedNamingTheDrawing) {
+  const std::string dot = "<circle cx='5' cy='5' r='0.5'/>";
+  const ImportResult at_limit = import_svg(svg_of(kMaxImportPrimitives, dot), "most.svg", {});
+  ASSERT_TRUE(at_limit.ok()) << errors_of(at_limit);
+  EXPECT_EQ(at_limit.image->children.size(), kMaxImportPrimitives);
+  EXPECT_TRUE(parse_image_xml(write_image_xml(*at_limit.image), "most.vimg").ok());
+
+  const ImportResult over = import_svg(svg_of(kMaxImportPrimitives + 1, dot), "over.svg", {});
+  ASSERT_FALSE(over.ok());
+  const std::string limit = std::to_string(kMaxImportPrimitives);
+  // The last circle is on line kMaxImportPrimitives + 2 (the <svg> tag is line 1).
+  EXPECT_EQ(errors_of(over), "over.svg:" + std::to_string(kMaxImportPrimitives + 2) +
+                                 ": error: the drawing gives more than " + limit + " primitives and groups (limit " +
+                                 limit + ")\n");
+
+  // A title becomes <meta><title>: two elements of the same budget.
+  const std::string title = "<title>t</title>";
+  const ImportResult titled = import_svg(svg_of(kMaxImportPrimitives - 2, dot, title), "titled.svg", {});
+  ASSERT_TRUE(titled.ok()) << errors_of(titled);
+  EXPECT_TRUE(parse_image_xml(write_image_xml(*titled.image), "titled.vimg").ok());
+  const ImportResult titled_over = import_svg(svg_of(kMaxImportPrimitives - 1, dot, title), "titled.svg", {});
+  ASSERT_FALSE(titled_over.ok());
+  EXPECT_NE(errors_of(titled_over).find("(limit " + std::to_string(kMaxImportPrimitives - 2) + ")"), std::string::npos)
+      << errors_of(titled_over);
+}
+
+}  // namespace
+}  // namespace vimg
