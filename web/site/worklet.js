@@ -3,7 +3,7 @@
 // in a worklet). Pointer events are applied at the start of the next block (no buffering beyond the
 // browser's own block). Messages in: {type:'init', wasm, vsc}, {type:'vsc', bytes},
 // {type:'event', finger, phase, x, y, pressure, id}. Out: {type:'ready'}, {type:'scope', samples,
-// contacts, eventIds}.
+// contacts, eventIds, peak}, {type:'error', text} (once, when rendering throws).
 'use strict';
 
 class VimgProcessor extends AudioWorkletProcessor {
@@ -13,6 +13,7 @@ class VimgProcessor extends AudioWorkletProcessor {
     this.pending = [];
     this.scope = new Float32Array(1024);
     this.scopeAt = 0;
+    this.peak = 0;
     this.blocks = 0;
     this.eventIds = [];
     this.port.onmessage = (e) => this.onMessage(e.data);
@@ -60,7 +61,18 @@ class VimgProcessor extends AudioWorkletProcessor {
     }
   }
 
+  // An error here would otherwise stay inside the audio thread: the page reports it as a console error.
   process(inputs, outputs) {
+    try {
+      return this.render(outputs);
+    } catch (err) {
+      if (!this.failed) this.port.postMessage({ type: 'error', text: String((err && err.stack) || err) });
+      this.failed = true;
+      return true;
+    }
+  }
+
+  render(outputs) {
     const out = outputs[0];
     if (!this.exports || out.length === 0) return true;
     const x = this.exports;
@@ -70,20 +82,20 @@ class VimgProcessor extends AudioWorkletProcessor {
     }
     this.pending.length = 0;
     const frames = out[0].length;
-    const at = x.vimg_live_render(frames) >> 2;
-    const block = new Float32Array(this.memory.buffer, at, frames);
+    const block = new Float32Array(this.memory.buffer, x.vimg_live_render(frames), frames);  // a byte offset
     for (const channel of out) channel.set(block);
     for (let i = 0; i < frames; ++i) {
       this.scope[this.scopeAt] = block[i];
       this.scopeAt = (this.scopeAt + 1) % this.scope.length;
     }
+    // The peak of every block since the last report, so no block's output goes unseen.
+    for (let i = 0; i < frames; ++i) this.peak = Math.max(this.peak, Math.abs(block[i]));
     // The first block that carries an event's effect reports it (the latency benchmark reads this).
     if (this.eventIds.length > 0 || ++this.blocks % 8 === 0) {
-      let peak = 0;
-      for (let i = 0; i < frames; ++i) peak = Math.max(peak, Math.abs(block[i]));
-      this.port.postMessage({ type: 'scope', samples: this.scope.slice(), at: this.scopeAt, peak,
+      this.port.postMessage({ type: 'scope', samples: this.scope.slice(), at: this.scopeAt, peak: this.peak,
                               contacts: x.vimg_live_contacts(), eventIds: this.eventIds, time: currentTime });
       this.eventIds = [];
+      this.peak = 0;
     }
     return true;
   }
