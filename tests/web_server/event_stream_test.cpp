@@ -1,0 +1,103 @@
+// /events (docs/web.md, "Serving"): an open page gets "event: image" with the image's name for each
+// publish after it connected, and a save of a watched image (by rename, as editors and vimg save)
+// rewrites the site's copy first and then reaches the page. Waits are on the stream's bytes; the
+// socket's receive bound only ends a hang.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <string>
+
+#include "storage/atomic_file.hpp"
+#include "tests/web_server/raw_http.hpp"
+#include "tests/web_server/site_fixture.hpp"
+#include "web/server/event_stream.hpp"
+#include "web/server/live_site.hpp"
+
+namespace vimg::test {
+namespace {
+
+using EventStream = SiteFixture;
+
+// Opens /events and waits for the server's greeting: from then on, every publish reaches it.
+void open_events(RawConnection& connection) {
+  ASSERT_TRUE(connection.connected());
+  connection.send_all("GET /events HTTP/1.1\r\nHost: localhost\r\n\r\n");
+  ASSERT_TRUE(connection.read_until(": connected\n")) << connection.received();
+  HttpResponse head = parse_response(connection.received());
+  EXPECT_EQ(head.status, 200);
+  EXPECT_EQ(head.headers["content-type"], "text/event-stream");
+  EXPECT_EQ(head.headers["cache-control"], "no-store");
+}
+
+TEST(EventMessage, EachLineOfTheDataIsADataField) {
+  EXPECT_EQ(web::format_event_message("image", "smiley"), "event: image\ndata: smiley\n\n");
+  EXPECT_EQ(web::format_event_message("image", "a\nb\r\nc\rd"), "event: image\ndata: a\ndata: b\ndata: c\ndata: d\n\n");
+}
+
+TEST_F(EventStream, EveryOpenPageGetsEachImageEvent) {
+  web::WebServer& server = start_server();
+  RawConnection first(port()), second(port());
+  open_events(first);
+  open_events(second);
+  server.publish_image_changed("smiley");
+  server.publish_image_changed("grid");
+  for (RawConnection* page : {&first, &second}) {
+    ASSERT_TRUE(page->read_until("data: grid\n\n")) << page->received();
+    const std::string& text = page->received();
+    EXPECT_LT(text.find("event: image\ndata: smiley\n\n"), text.find("event: image\ndata: grid\n\n"));
+  }
+  EXPECT_EQ(server.open_event_streams(), 2);
+}
+
+TEST_F(EventStream, StopEndsTheOpenStreams) {
+  web::WebServer& server = start_server();
+  RawConnection page(port());
+  open_events(page);
+  server.stop();
+  page.read_to_end();  // returns only because the server ended the stream
+  EXPECT_EQ(server.open_event_streams(), 0);
+}
+
+TEST_F(EventStream, AtMostKMaxEventStreamsAreOpen) {
+  start_server();
+  std::vector<std::unique_ptr<RawConnection>> pages;
+  for (int i = 0; i < web::kMaxEventStreams; ++i) {
+    pages.push_back(std::make_unique<RawConnection>(port()));
+    open_events(*pages.back());
+  }
+  EXPECT_EQ(exchange(port(), "GET", "/events").status, 503);
+  EXPECT_EQ(exchange(port(), "GET", "/index.html").status, 200);  // files are still served
+}
+
+TEST_F(EventStream, ASavedImageIsRewrittenThenPushed) {
+  const fs::path image = root_ / "smiley.vimg";
+  write_text(image, "first");
+  const fs::path copy = site_ / "images" / "smiley.vsc";
+  web::WebServerOptions options;
+  options.site_dir = site_;
+  options.log_line = [](const std::string&) {};
+  // The refresh stands in for update_web_image: the site's copy becomes the image's bytes.
+  web::LiveSite live(options, {image}, [&](const fs::path& saved) -> std::optional<std::string> {
+    std::ifstream in(saved, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (write_file_atomically(copy, bytes)) return std::nullopt;
+    return saved.stem().string();
+  });
+  ASSERT_FALSE(live.start());
+  RawConnection page(live.server().port());
+  open_events(page);
+  write_text(root_ / "unrelated.vimg", "not watched");  // a save of another file says nothing
+  ASSERT_FALSE(write_file_atomically(image, "second"));  // temporary + rename, as a save
+  ASSERT_TRUE(page.read_until("event: image\ndata: smiley\n\n")) << page.received();
+  EXPECT_EQ(page.received().find("unrelated"), std::string::npos);
+  std::ifstream in(copy, std::ios::binary);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), "second");
+  // A write in place (an editor that truncates and writes) is a save too.
+  write_text(image, "third");
+  ASSERT_TRUE(page.read_until_count("event: image\ndata: smiley\n\n", 2)) << page.received();
+}
+
+}  // namespace
+}  // namespace vimg::test

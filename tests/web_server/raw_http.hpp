@@ -1,0 +1,121 @@
+#pragma once
+// A client that sends exactly the bytes a test gives (no normalisation of "/../", no encoding, any
+// method) to 127.0.0.1:PORT and reads what comes back: how an attacker or curl --path-as-is talks.
+// Reads block; SO_RCVTIMEO only bounds a hang (a broken server), it times nothing.
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <map>
+#include <string>
+
+namespace vimg::test {
+
+struct HttpResponse {
+  int status = 0;  // 0: no response (the connection closed or failed first)
+  std::map<std::string, std::string> headers;  // names in lower case
+  std::string body;
+};
+
+class RawConnection {
+ public:
+  explicit RawConnection(int port) {
+    fd_ = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    timeval hang_bound{120, 0};
+    setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &hang_bound, sizeof hang_bound);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    connected_ = connect(fd_, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0;
+  }
+  ~RawConnection() { if (fd_ >= 0) close(fd_); }
+  RawConnection(const RawConnection&) = delete;
+  RawConnection& operator=(const RawConnection&) = delete;
+
+  bool connected() const { return connected_; }
+
+  bool send_all(const std::string& bytes) {
+    std::size_t sent = 0;
+    while (sent < bytes.size()) {
+      const ssize_t n = ::send(fd_, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
+      if (n <= 0) return false;
+      sent += static_cast<std::size_t>(n);
+    }
+    return true;
+  }
+
+  // Reads until `text` has arrived (true) or the connection ends (false); everything read is in received().
+  bool read_until(const std::string& text) {
+    while (received_.find(text) == std::string::npos) {
+      if (!read_some()) return false;
+    }
+    return true;
+  }
+  // Reads until `text` has arrived `count` times (each SSE message comes in a chunk of its own, so
+  // a message is never split by the chunked framing).
+  bool read_until_count(const std::string& text, int count) {
+    while (count_of(text) < count) {
+      if (!read_some()) return false;
+    }
+    return true;
+  }
+  int count_of(const std::string& text) const {
+    int n = 0;
+    for (std::size_t at = received_.find(text); at != std::string::npos; at = received_.find(text, at + text.size())) ++n;
+    return n;
+  }
+  void read_to_end() { while (read_some()) {} }
+  const std::string& received() const { return received_; }
+
+ private:
+  bool read_some() {
+    char buffer[4096];
+    ssize_t n = 0;
+    do {
+      n = ::recv(fd_, buffer, sizeof buffer, 0);
+    } while (n < 0 && errno == EINTR);
+    if (n <= 0) return false;
+    received_.append(buffer, static_cast<std::size_t>(n));
+    return true;
+  }
+
+  int fd_ = -1;
+  bool connected_ = false;
+  std::string received_;
+};
+
+inline HttpResponse parse_response(const std::string& raw) {
+  HttpResponse response;
+  const std::size_t head_end = raw.find("\r\n\r\n");
+  if (raw.rfind("HTTP/1.", 0) != 0 || head_end == std::string::npos) return response;
+  response.status = std::stoi(raw.substr(9, 3));
+  std::size_t line_start = raw.find("\r\n") + 2;
+  while (line_start < head_end) {
+    const std::size_t line_end = raw.find("\r\n", line_start);
+    const std::string line = raw.substr(line_start, line_end - line_start);
+    const std::size_t colon = line.find(':');
+    std::string name = line.substr(0, colon);
+    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    response.headers[name] = colon == std::string::npos ? "" : line.substr(line.find_first_not_of(' ', colon + 1));
+    line_start = line_end + 2;
+  }
+  response.body = raw.substr(head_end + 4);
+  return response;
+}
+
+// One request with "Connection: close" sent as given; the whole response.
+inline HttpResponse exchange(int port, const std::string& method, const std::string& target,
+                             const std::string& extra_headers = "", const std::string& body = "") {
+  RawConnection connection(port);
+  if (!connection.connected()) return {};
+  connection.send_all(method + " " + target + " HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n" + extra_headers +
+                      "\r\n" + body);
+  connection.read_to_end();
+  return parse_response(connection.received());
+}
+
+}  // namespace vimg::test

@@ -1,0 +1,59 @@
+#pragma once
+// Server-Sent Events for the open pages (docs/web.md, "Serving"): `/events` streams
+// "event: image\ndata: NAME\n\n" each time an image of the site was rewritten, so the page fetches
+// images/NAME.vsc again. One EventBroadcaster is shared by every open stream: publish() appends a
+// message and wakes them all; each stream keeps a cursor (the number of messages it has sent) and
+// waits for the ones after it. Only the last kKeptEventMessages are kept: a stream that fell
+// further behind gets those (the page reloads the same images either way).
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <mutex>
+#include <string>
+#include <string_view>
+
+namespace vimg::web {
+
+inline constexpr std::size_t kKeptEventMessages = 256;
+// At most this many pages listen at once; a further /events gets 503 (each open stream holds one
+// of the server's worker threads, and pages must still be able to fetch their files).
+inline constexpr int kMaxEventStreams = 8;
+
+// "event: EVENT\ndata: LINE\n...\n\n": every line of `data` in a data field of its own, as the
+// SSE format requires (a page joins them again with "\n"); a CR or CRLF counts as a line break.
+std::string format_event_message(std::string_view event, std::string_view data);
+
+class EventBroadcaster {
+ public:
+  // Adds a message (formatted) and wakes every waiting stream. Nothing once closed.
+  void publish(std::string message);
+
+  // Opens one more stream if fewer than kMaxEventStreams are open; returns its cursor (every
+  // message published after this call reaches it), or -1 when full or closed.
+  std::int64_t open_stream();
+  void close_stream();
+
+  struct Wait {
+    std::string text;     // the messages after the cursor, concatenated; empty after a timeout
+    bool closed = false;  // the broadcaster was closed: the stream must end
+  };
+  // Blocks until a message after `cursor` exists (returns them all and moves the cursor), the
+  // broadcaster closes, or `max_wait` passes (a keep-alive comment is then due).
+  Wait wait_after(std::int64_t& cursor, std::chrono::milliseconds max_wait);
+
+  // Wakes every stream for the last time: they end, and no stream opens any more.
+  void close();
+
+  int open_streams() const;
+
+ private:
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::string> kept_;  // the last messages; kept_.back() is message number published_ - 1
+  std::int64_t published_ = 0;
+  int open_streams_ = 0;
+  bool closed_ = false;
+};
+
+}  // namespace vimg::web

@@ -1,0 +1,61 @@
+#pragma once
+// The read-only server of a built web site (docs/web.md, "Serving"), on cpp-httplib:
+//   - GET and HEAD only; any other method gets 405 with "Allow: GET, HEAD" and the connection closes;
+//   - the site's folder only (web/server/site_path.hpp): '..' (also percent-encoded) and symbolic
+//     links out of the folder are forbidden (403), a folder without index.html is not found (404),
+//     nothing is ever listed;
+//   - bounded requests: a request line (URI) beyond 8 KiB gets 414 and a header line beyond 8 KiB
+//     400 (the limits Debian's libcpp-httplib is built with), a body beyond kMaxRequestBodyBytes 413;
+//     a file beyond kMaxServedFileBytes is not served (500);
+//   - every response says Cache-Control: no-store (a page always fetches the latest save) and
+//     X-Content-Type-Options: nosniff; the Content-Type comes from web/server/content_type.hpp;
+//   - /events is the Server-Sent Events stream of the images' changes (web/server/event_stream.hpp);
+//   - one log line per request: "METHOD PATH STATUS BYTES" (control characters escaped).
+// The server runs on threads of its own between start() and stop() (or the destructor).
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace vimg::web {
+
+inline constexpr std::size_t kMaxRequestBodyBytes = 4096;
+inline constexpr std::size_t kMaxServedFileBytes = std::size_t{64} << 20;
+inline constexpr int kServerWorkerThreads = 24;
+
+struct WebServerOptions {
+  std::filesystem::path site_dir;
+  std::string host = "127.0.0.1";  // "0.0.0.0" for the LAN (vimg serve --lan)
+  int port = 0;                    // 0: any free port (port() says which)
+  // Receives each log line (without its newline); by default they go to stderr.
+  std::function<void(const std::string&)> log_line;
+};
+
+class WebServer {
+ public:
+  explicit WebServer(WebServerOptions options);
+  ~WebServer();  // stop()
+  WebServer(const WebServer&) = delete;
+  WebServer& operator=(const WebServer&) = delete;
+
+  // Binds the address and serves from a thread of its own. Returns the problem (a folder that is
+  // not there, an address in use), or nothing once the server accepts connections.
+  std::optional<std::string> start();
+  int port() const;
+  bool running() const;
+
+  // Tells every open page that images/NAME.vsc was rewritten ("event: image", "data: NAME").
+  void publish_image_changed(const std::string& name);
+  int open_event_streams() const;
+
+  // Ends the open event streams, closes the listening socket and joins the threads. Idempotent.
+  void stop();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace vimg::web
