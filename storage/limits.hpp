@@ -85,6 +85,10 @@ inline constexpr std::size_t kMaxImportPrimitives = kMaxXmlElements - 2;
 // Points an SVG import may flatten in all, counted as they are produced: a written image holds a
 // point in about 16 bytes, so more would not fit the largest image file (4 194 304).
 inline constexpr std::size_t kMaxImportPoints = kMaxImageFileBytes / 16;
+// Outline vertices and bounding boxes an SVG import visits placing its paths' subpaths (the nonzero
+// fill's point-in-ring tests, each hole's nearest bridge vertex): a path of many subpaths nested in
+// long rings is refused in seconds instead of running for minutes.
+inline constexpr std::size_t kMaxImportOutlineTests = 100'000'000 / kLimitScale;
 
 // --- Studies (storage/study: study files and trial files; docs/limits.md "Studies") ----------------
 inline constexpr std::size_t kMaxStudyFileBytes = 1 * kMiB / kLimitScale;  // a matching or location study file

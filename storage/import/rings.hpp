@@ -5,6 +5,7 @@
 // h_0 -> r_i). The two bridge edges coincide, so every ray crosses both or neither and the
 // even-odd fill is exactly that of the separate rings. Pure: no I/O.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "primitives/geometry/vec2.hpp"
@@ -22,5 +23,8 @@ void remove_repeats(Ring& ring, bool closed);
 // One point list for the even-odd union of `rings` (each at least 3 points): the first ring,
 // with every other ring bridged from the vertex of the first ring nearest to its own first point.
 Ring bridge_rings(const std::vector<Ring>& rings);
+// The same within a work budget: `work` grows by the vertices looked at (the first ring's once, and
+// those near each further ring's first point); nothing when it would pass `max_work`.
+std::optional<Ring> bridge_rings(const std::vector<Ring>& rings, std::size_t max_work, std::size_t& work);
 
 }  // namespace vimg::import

@@ -239,9 +239,11 @@ class SvgImporter {
     if (style.stroke && style.dashed) warn(e, "stroke-dasharray is not imported: the stroke becomes a solid line");
     svg::ShapeSettings settings{ctm, style, options_.tolerance_mm, options_.dot_max_radius_mm, kMaxPolygonPoints};
     settings.points_left = kMaxImportPoints - points_;
+    settings.outline_tests_left = kMaxImportOutlineTests - outline_tests_;
     settings.primitives_left = primitive_budget() - std::min(primitive_budget(), primitives_);
     svg::ShapeOutput shape = svg::convert_shape(g, settings);
     points_ += shape.points;
+    outline_tests_ += shape.outline_tests;
     for (const std::string& w : shape.warnings) warn(e, w);
     if (!shape.error.empty()) return diagnostics_.error(e.GetLineNum(), shape.error);
     // One primitive stands alone; several go into a group, which is an element too.
@@ -377,8 +379,8 @@ class SvgImporter {
   Image image_;
   svg::UniqueIds ids_;
   std::size_t title_elements_ = 0;  // 2 when the drawing has a title: <meta> and its <title>
-  std::size_t points_ = 0;          // points flattened so far, within kMaxImportPoints
-  std::size_t primitives_ = 0;
+  // So far: points flattened, outline tests, primitives (kMaxImportPoints, ...OutlineTests, ...Primitives).
+  std::size_t points_ = 0, outline_tests_ = 0, primitives_ = 0;
 };
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "primitives/geometry/hit_test.hpp"
@@ -118,29 +119,50 @@ struct Converter {
     return true;
   }
 
+  bool over_outline_tests() {
+    if (out.outline_tests <= s.outline_tests_left) return false;
+    out.error = "placing the subpaths of this path takes more than " + std::to_string(kMaxImportOutlineTests) +
+                " outline tests in the drawing (limit " + std::to_string(kMaxImportOutlineTests) +
+                "): paths of fewer subpaths in shorter outlines import faster";
+    return true;
+  }
+
   // The nonzero rule as even-odd: a ring is kept only where the fill changes across it, i.e. when
   // the winding number just outside it (the directions of the rings around it) and just inside it
   // differ in being zero. For rings that do not cross, even-odd over the kept rings is the nonzero
   // fill. Beyond kMaxNonzeroRings rings the test would be slow; they stay even-odd, with a warning.
+  // A ring is tested only against the rings whose bounding box holds its first point; boxes and
+  // edges visited count against outline_tests_left. False when that runs out (out.error says so).
   static constexpr std::size_t kMaxNonzeroRings = 1000;
-  void apply_nonzero(std::vector<import::Ring>& rings) {
-    if (s.style.even_odd || rings.size() < 2) return;
+  bool apply_nonzero(std::vector<import::Ring>& rings) {
+    if (s.style.even_odd || rings.size() < 2) return true;
     if (rings.size() > kMaxNonzeroRings) {
       out.warnings.push_back("fill-rule nonzero with more than " + std::to_string(kMaxNonzeroRings) +
                              " subpaths: filled by the even-odd rule");
-      return;
+      return true;
     }
     std::vector<int> direction(rings.size());
-    for (std::size_t i = 0; i < rings.size(); ++i) direction[i] = import::twice_signed_area(rings[i]) > 0 ? 1 : -1;
+    std::vector<Polygon> polygons(rings.size());
+    std::vector<Box2> boxes(rings.size());
+    for (std::size_t i = 0; i < rings.size(); ++i) {
+      direction[i] = import::twice_signed_area(rings[i]) > 0 ? 1 : -1;
+      polygons[i].vertices = rings[i];
+      boxes[i] = bounding_box(polygons[i]);
+    }
     std::vector<import::Ring> kept;
     for (std::size_t i = 0; i < rings.size(); ++i) {
       int outside = 0;
       for (std::size_t j = 0; j < rings.size(); ++j) {
-        if (j != i && contains(Polygon{rings[j]}, rings[i].front())) outside += direction[j];
+        ++out.outline_tests;
+        if (j == i || !boxes[j].contains(rings[i].front())) continue;
+        out.outline_tests += rings[j].size();
+        if (contains(polygons[j], rings[i].front())) outside += direction[j];
       }
+      if (over_outline_tests()) return false;
       if ((outside != 0) != (outside + direction[i] != 0)) kept.push_back(rings[i]);
     }
     rings = std::move(kept);
+    return true;
   }
 
   bool polygon_surface() {
@@ -152,18 +174,21 @@ struct Converter {
       import::remove_repeats(ring, true);
       if (ring.size() >= 3) rings.push_back(std::move(ring));
     }
-    apply_nonzero(rings);
+    if (!apply_nonzero(rings)) return false;
     if (rings.empty()) return true;
-    import::Ring joined = import::bridge_rings(rings);
-    if (joined.size() > s.max_points) {
+    std::size_t joined_points = rings.front().size();  // each further ring and its bridge there and back
+    for (std::size_t r = 1; r < rings.size(); ++r) joined_points += rings[r].size() + 2;
+    if (joined_points > s.max_points) {
       out.error = "a polygon of more than " + std::to_string(s.max_points) + " points (limit " +
                   std::to_string(s.max_points) + ")";
       return false;
     }
+    const std::optional<import::Ring> joined = import::bridge_rings(rings, s.outline_tests_left, out.outline_tests);
+    if (over_outline_tests() || !joined) return false;  // no ring when over the budget
     Surface surface;
     surface.shape = SurfaceShape::polygon;
-    surface.points.reserve(joined.size());
-    for (const Vec2& p : joined) surface.points.push_back({p.x, p.y});
+    surface.points.reserve(joined->size());
+    for (const Vec2& p : *joined) surface.points.push_back({p.x, p.y});
     out.primitives.push_back(primitive(std::move(surface)));
     return true;
   }

@@ -32,6 +32,7 @@ struct ShapeSettings {
   std::size_t max_points = 0;     // points of one flattened element, at most
   std::size_t points_left = static_cast<std::size_t>(-1);      // points the whole import may still flatten
   std::size_t primitives_left = static_cast<std::size_t>(-1);  // primitives the whole import may still give
+  std::size_t outline_tests_left = static_cast<std::size_t>(-1);  // kMaxImportOutlineTests the import has left
 };
 
 struct ShapeOutput {
@@ -40,6 +41,7 @@ struct ShapeOutput {
   std::string error;                // a limit was exceeded; primitives are then incomplete
   std::size_t points = 0;           // points flattened, counted as they were produced
   bool over_primitives = false;     // stopped at primitives_left: primitives are then incomplete
+  std::size_t outline_tests = 0;    // outline vertices and boxes visited placing subpaths
 };
 
 ShapeOutput convert_shape(const ShapeGeometry& geometry, const ShapeSettings& settings);

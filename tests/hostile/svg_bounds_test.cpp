@@ -5,6 +5,7 @@
 // naming the drawing and the limit (docs/import.md "Limits", docs/limits.md "Import").
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -82,6 +83,45 @@ TEST(SvgBounds, ArcsOfEnormousRadiusAreRefusedAtThePointLimitWithinTheCaps) {
             std::string::npos)
       << outcome.output;
   EXPECT_EQ(outcome.output.find("arcs.svg: error:"), std::string::npos) << "the line is named: " << outcome.output;
+}
+
+// `count` paths of path data `d`.
+std::string paths_of(std::size_t count, const std::string& d, const std::string& fill_rule) {
+  return svg_of(count, "<path fill-rule='" + fill_rule + "' d='" + d + "'/>");
+}
+
+TEST(SvgBounds, PathsOfManyNestedSubpathsAreRefusedAtTheOutlineTestLimitWithinTheCaps) {
+  // Nonzero fill: 1000 nested squares test every square against every other, 10^6 tests a path;
+  // 200 paths used to take minutes. The boxes and edges visited are counted for the whole drawing.
+  std::string nested;
+  for (int k = 0; k < 1000; ++k) {
+    const std::string a = std::to_string(0.01 * k), side = std::to_string(100 - 0.02 * k);
+    nested += "M" + a + " " + a + " h" + side + " v" + side + " h-" + side + " z ";
+  }
+  // Even-odd: 10 000 holes at the centre of a 40 000-gon are all equally near every vertex, so the
+  // nearest bridge vertex is searched among all of them: 4 * 10^8 distances a path, 20 paths minutes.
+  std::string holed = "M95,50";
+  for (int k = 1; k < 40'000; ++k) {
+    const double t = 2 * 3.14159265358979 * k / 40'000;
+    holed += " L" + std::to_string(50 + 45 * std::cos(t)) + "," + std::to_string(50 + 45 * std::sin(t));
+  }
+  holed += " Z";
+  for (int k = 0; k < 10'000; ++k) holed += " M50,50 l0.01,0 l0,0.01 z";
+  const std::string limit = std::to_string(kMaxImportOutlineTests);
+  for (const auto& [name, svg] : {std::pair{"nested.svg", paths_of(200, nested, "nonzero")},
+                                  std::pair{"holed.svg", paths_of(20, holed, "evenodd")}}) {
+    const test::ChildOutcome outcome = test::run_bounded(
+        [&] {
+          const ImportResult r = import_svg(svg, name, {});
+          return r.ok() ? std::string("imported") : errors_of(r);
+        },
+        kMemoryCapBytes, kCpuCapSeconds);
+    ASSERT_TRUE(outcome.finished()) << name << ": " << outcome.describe();
+    EXPECT_NE(outcome.output.find(": error: placing the subpaths of this path takes more than " + limit +
+                                  " outline tests in the drawing (limit " + limit + ")"),
+              std::string::npos)
+        << name << ": " << outcome.output;
+  }
 }
 
 TEST(SvgBounds, TheDocumentedMostPrimitivesImportAndReadBackAndOneMoreIsRefusedNamingTheDrawing) {
