@@ -13,6 +13,7 @@ packages=(
   locales
   libboost-math-dev python3-numpy python3-scipy
   help2man desktop-file-utils dpkg-dev file
+  emscripten chromium libcpp-httplib-dev libqrencode-dev
 )
 
 missing=()
@@ -24,13 +25,25 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#packages[@]} packages present"
-  exit 0
+else
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  echo "setup: done"
 fi
 
-echo "setup: installing ${missing[*]}"
-sudo_cmd=()
-if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
-echo "setup: done"
+# The browser tests' driver (puppeteer-core, pinned in tests/browser/package-lock.json; it never
+# downloads a browser: the tests use Debian's chromium). Node.js and npm come with the machine.
+browser_tests="$(dirname "$0")/../tests/browser"
+if ! command -v npm >/dev/null; then
+  echo "setup: npm is missing: the browser tests need Node.js 18 or later with npm" >&2
+  exit 1
+fi
+if [ ! -f "$browser_tests/node_modules/.package-lock.json" ] ||
+   [ "$browser_tests/package-lock.json" -nt "$browser_tests/node_modules/.package-lock.json" ]; then
+  echo "setup: npm ci in tests/browser"
+  npm ci --prefix "$browser_tests" --no-audit --no-fund --loglevel=error
+fi

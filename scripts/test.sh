@@ -7,6 +7,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 preset="${VIMG_TEST_PRESET:-release}"
 bash scripts/setup.sh
+# The web player first (Emscripten): the suite's web tests compare it with the native renderer
+# and drive it in Chromium.
+cmake --preset web >/dev/null
+cmake --build --preset web
 cmake --preset "$preset" >/dev/null
 cmake --build --preset "$preset"
 ctest --preset "$preset" --no-tests=error
