@@ -83,8 +83,9 @@ std::optional<std::string> picture_size(const Image& image, double scale_px_per_
   const double w = std::max(1.0, std::ceil(image.width_mm * scale_px_per_mm));
   const double h = std::max(1.0, std::ceil(image.height_mm * scale_px_per_mm));
   if (!(w * h <= kMaxPngPixels)) {
-    return "a PNG of " + format_decimal(w) + " x " + format_decimal(h) + " pixels exceeds the limit of " +
-           format_decimal(kMaxPngPixels) + " pixels; use a smaller scale (limit " + format_decimal(kMaxPngPixels) + ")";
+    const std::string limit = std::to_string(static_cast<long long>(kMaxPngPixels));
+    return "a PNG of " + format_decimal(w) + " x " + format_decimal(h) + " pixels exceeds the limit of " + limit +
+           " pixels; use a smaller scale (limit " + limit + ")";
   }
   size.width_px = static_cast<int>(w);
   size.height_px = static_cast<int>(h);

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
 
 #include "storage/limits.hpp"
@@ -27,10 +29,12 @@ struct ReadSource {
 struct ReadState {
   ReadSource source;
   unsigned char* row = nullptr;  // malloc'ed; freed by the caller on every path
-  // decode_png_rgba only: the whole picture as 8-bit RGBA rows (malloc'ed, freed by the caller).
+  // decode_png_rgba only: the whole picture as 8-bit RGBA rows, into the caller's `pixels` of
+  // `pixel_bytes` (a picture that needs more is an error).
   bool keep_pixels = false;
   double max_pixels = kMaxDecodedPngPixels;
   unsigned char* pixels = nullptr;
+  std::size_t pixel_bytes = 0;
   png_uint_32 width = 0;
   png_uint_32 height = 0;
 };
@@ -41,6 +45,17 @@ bool decode_text(ReadState* state, ErrorSink* sink);
 // libpng allocates a chunk's declared length before reading it; a chunk can never be longer than
 // the bytes that follow it, so such lies are caught here, before any allocation.
 bool chunk_lengths_fit(std::string_view bytes, ErrorSink* sink);
+
+// The picture's size from IHDR (the first chunk) against kMaxPngSide and `max_pixels`: a limit,
+// not damage, named with the size (libpng would only say "Invalid IHDR data"). Nothing when within
+// them or when there is no IHDR first (libpng reports that). storage/png_image_data.cpp.
+std::optional<std::string> size_over_limits(std::string_view bytes, double max_pixels);
+
+// The image data (IDAT) inflated no further than one byte past what the rows IHDR declares need,
+// so that data that inflates far beyond them (a small picture whose data inflates to gigabytes)
+// costs no more than the picture. Returns the refusal, naming the bytes expected; nothing when the
+// data fits, or when IHDR or the data is damaged (libpng reports that). storage/png_image_data.cpp.
+std::optional<std::string> image_data_over_rows(std::string_view bytes);
 
 // The big-endian 32-bit number at `pos` of `bytes`.
 std::uint32_t be32(std::string_view bytes, std::size_t pos);

@@ -75,8 +75,7 @@ bool decode_text(ReadState* state, ErrorSink* sink) {
   if (state->keep_pixels) {
     state->width = png_get_image_width(png, info);
     state->height = height;
-    state->pixels = static_cast<unsigned char*>(std::malloc(row_bytes * height + 1));
-    if (state->pixels == nullptr) png_error(png, "out of memory");
+    if (state->pixels == nullptr || row_bytes * height > state->pixel_bytes) png_error(png, "the picture is larger than its header said");
   }
   for (int pass = 0; pass < passes; ++pass) {
     for (png_uint_32 y = 0; y < height; ++y) {
@@ -92,6 +91,7 @@ bool decode_text(ReadState* state, ErrorSink* sink) {
 
 namespace {
 
+using png_detail::be32;
 using png_detail::chunk_lengths_fit;
 using png_detail::decode_text;
 using png_detail::ErrorSink;
@@ -101,28 +101,45 @@ using png_detail::ReadState;
 
 DecodedPng decode_png_rgba(std::string_view bytes, double max_pixels) {
   DecodedPng result;
+  ErrorSink sink;
+  if (!chunk_lengths_fit(bytes, &sink)) {
+    result.error = sink.message;
+    return result;
+  }
+  if (auto limit = png_detail::size_over_limits(bytes, max_pixels)) {
+    result.error = *limit;
+    return result;
+  }
+  if (auto over = png_detail::image_data_over_rows(bytes)) {
+    result.error = *over;
+    return result;
+  }
+  // The pixels as IHDR declares them, decoded in place (within the limits just checked).
+  // (Without IHDR first there is nothing to hold: libpng refuses such a file before the rows.)
+  const bool ihdr_first = bytes.size() >= 24 && bytes.compare(12, 4, "IHDR") == 0;
+  const std::size_t declared = ihdr_first ? std::size_t{be32(bytes, 16)} * be32(bytes, 20) * 4 : 0;
+  try {
+    result.rgba.resize(declared);
+  } catch (const std::bad_alloc&) {
+    result.error = "out of memory decoding the picture";
+    return result;
+  }
   ReadState state;
   state.source.data = reinterpret_cast<const unsigned char*>(bytes.data());
   state.source.size = bytes.size();
   state.keep_pixels = true;
   state.max_pixels = max_pixels;
-  ErrorSink sink;
-  const bool decoded = chunk_lengths_fit(bytes, &sink) && decode_text(&state, &sink);
+  state.pixels = result.rgba.data();
+  state.pixel_bytes = result.rgba.size();
+  const bool decoded = decode_text(&state, &sink);
   std::free(state.row);
   if (!decoded) {
-    std::free(state.pixels);
+    result.rgba = {};
     result.error = sink.message;
     return result;
   }
-  try {
-    const std::size_t size = std::size_t{state.width} * state.height * 4;
-    result.rgba.assign(state.pixels, state.pixels + size);
-    result.width = static_cast<int>(state.width);
-    result.height = static_cast<int>(state.height);
-  } catch (const std::bad_alloc&) {
-    result.error = "out of memory decoding the picture";
-  }
-  std::free(state.pixels);
+  result.width = static_cast<int>(state.width);
+  result.height = static_cast<int>(state.height);
   return result;
 }
 

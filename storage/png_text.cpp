@@ -1,4 +1,4 @@
-// Reading the `vibroimage` text chunk of a PNG: the size limits from IHDR, the iTXt/zTXt/tEXt
+// Reading the `vibroimage` text chunk of a PNG: the size and image data limits (png_image_data.cpp), the iTXt/zTXt/tEXt
 // chunks found by walking the bytes (with their CRC), inflation up to kMaxImageFileBytes, and
 // read_png_text().
 #include <zlib.h>
@@ -23,23 +23,8 @@ using png_detail::chunk_lengths_fit;
 using png_detail::decode_text;
 using png_detail::ErrorSink;
 using png_detail::ReadState;
-
-// The picture's size from IHDR (the first chunk) against kMaxPngSide and kMaxDecodedPngPixels:
-// a limit, not damage, and named with the size (libpng would only say "Invalid IHDR data").
-std::optional<std::string> size_over_limits(std::string_view bytes) {
-  if (bytes.size() < 24 || bytes.compare(12, 4, "IHDR") != 0) return std::nullopt;  // libpng reports it
-  const std::uint32_t width = be32(bytes, 16), height = be32(bytes, 20);
-  const std::string size = "the picture is " + std::to_string(width) + " x " + std::to_string(height) + " pixels";
-  if (width > static_cast<std::uint32_t>(kMaxPngSide) || height > static_cast<std::uint32_t>(kMaxPngSide)) {
-    return size + ", over the limit of " + std::to_string(kMaxPngSide) + " pixels a side (limit " +
-           std::to_string(kMaxPngSide) + ")";
-  }
-  if (static_cast<double>(width) * static_cast<double>(height) > kMaxDecodedPngPixels) {
-    const auto limit = std::to_string(static_cast<std::uint64_t>(kMaxDecodedPngPixels));
-    return size + ", over the limit of " + limit + " pixels decoded (limit " + limit + ")";
-  }
-  return std::nullopt;
-}
+using png_detail::image_data_over_rows;
+using png_detail::size_over_limits;
 
 // A text chunk whose keyword is `vibroimage`.
 struct TextChunk {
@@ -186,8 +171,12 @@ PngText read_png_text(std::string_view bytes) {
     result.damaged = true;
     return result;
   }
-  if (auto limit = size_over_limits(bytes)) {
+  if (auto limit = size_over_limits(bytes, kMaxDecodedPngPixels)) {
     result.error = *limit;
+    return result;
+  }
+  if (auto over = image_data_over_rows(bytes)) {
+    result.error = *over;
     return result;
   }
   const bool decoded = decode_text(&state, &sink);

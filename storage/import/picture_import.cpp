@@ -69,7 +69,7 @@ class PictureImporter {
     if (options_.levels < 1 || options_.levels > kMaxPictureLevels) {
       return fail("levels must be 1 .. " + std::to_string(kMaxPictureLevels));
     }
-    const DecodedPng png = decode_png_rgba(bytes, std::min(options_.max_pixels, kMaxPngPixels));
+    DecodedPng png = decode_png_rgba(bytes, std::min(options_.max_pixels, kMaxPngPixels));
     if (!png.error.empty()) return fail("cannot import the picture: " + png.error);
     if (png.width <= 0 || png.height <= 0) return fail("the picture has no pixels");
     const double mm_per_px = *options_.width_mm / png.width;
@@ -80,6 +80,7 @@ class PictureImporter {
                   format_decimal(kMaxCanvasMm) + " mm); give a smaller --width-mm");
     }
     const std::vector<std::uint8_t> levels = pixel_levels(png, options_.levels);
+    png.rgba = {};  // 4 bytes a pixel, no longer needed while tracing
     std::vector<std::uint8_t> mask(levels.size());
     for (int level = 1; level <= options_.levels; ++level) {
       for (std::size_t i = 0; i < levels.size(); ++i) mask[i] = levels[i] == level ? 1 : 0;
@@ -117,36 +118,93 @@ class PictureImporter {
     return r;
   }
 
+  // Work of placing and bridging holes, against kMaxPictureContainmentTests; false past it.
+  bool count_work(double work) {
+    work_ += work;
+    if (work_ <= kMaxPictureContainmentTests) return true;
+    error_ = "the picture has too many holes in large outlines to import (limit " +
+             std::to_string(static_cast<long long>(kMaxPictureContainmentTests)) +
+             " point tests); use fewer --levels or a smaller picture";
+    return false;
+  }
+
+  std::string too_many_points(double gain) const {
+    return "an outline of gain " + format_decimal(gain) + " has more than " + std::to_string(kMaxPolygonPoints) +
+           " points (limit " + std::to_string(kMaxPolygonPoints) + "); use a smaller picture";
+  }
+
+  // Traces and simplifies one level's outlines, refusing as soon as a limit is passed: the points
+  // kept (of one outline and in all) and the surfaces with this level's group are counted while
+  // tracing, so that nothing past a limit is ever traced or held.
+  bool trace_level(const std::vector<std::uint8_t>& mask, int width, int height, double tolerance_px, double gain,
+                   std::vector<Outline>& outers, std::vector<Outline>& holes) {
+    import::RingSimplifier simplifier(tolerance_px);
+    const auto on_point = [&](Vec2 p) {
+      simplifier.add(p);
+      if (simplifier.kept() > kMaxPolygonPoints) {
+        error_ = too_many_points(gain);
+        return false;
+      }
+      if (points_ + simplifier.kept() > kMaxImportPoints) {
+        error_ = "the outlines of the picture hold more than " + std::to_string(kMaxImportPoints) + " points (limit " +
+                 std::to_string(kMaxImportPoints) + "); use fewer --levels or a smaller picture";
+        return false;
+      }
+      return true;
+    };
+    const auto on_end = [&] {
+      Ring simple = simplifier.finish();
+      if (simple.size() < 3) {
+        ++dropped_;
+        return true;
+      }
+      if (simple.size() > kMaxPolygonPoints) {
+        error_ = too_many_points(gain);
+        return false;
+      }
+      points_ += simple.size();
+      const double area = import::twice_signed_area(simple) / 2.0;
+      const bool outer = area < 0.0;
+      // This level's group and its surfaces so far, after the levels before.
+      if (outer && primitives_ + 1 + outers.size() + 1 > kMaxImportPrimitives) {
+        error_ = "the picture gives more than " + std::to_string(kMaxImportPrimitives) + " surfaces and groups (limit " +
+                 std::to_string(kMaxImportPrimitives) + "); use fewer --levels or a smaller picture";
+        return false;
+      }
+      Outline o{std::move(simple), {}, std::fabs(area)};
+      o.box = box_of(o.ring);
+      (outer ? outers : holes).push_back(std::move(o));
+      return true;
+    };
+    import::walk_contours(mask, width, height, on_point, on_end);
+    return error_.empty();
+  }
+
   bool outline_level(const std::vector<std::uint8_t>& mask, int width, int height, double mm_per_px, double gain,
                      std::vector<Element>& out) {
     std::vector<Outline> outers, holes;
-    const double tolerance_px = options_.simplify_mm / mm_per_px;
-    for (Ring& ring : import::trace_contours(mask, width, height)) {
-      Ring simple = import::simplify_ring(ring, tolerance_px);
-      if (simple.size() < 3) {
-        ++dropped_;
-        continue;
-      }
-      const double area = import::twice_signed_area(simple) / 2.0;
-      Outline o{std::move(simple), {}, std::fabs(area)};
-      o.box = box_of(o.ring);
-      (area < 0.0 ? outers : holes).push_back(std::move(o));
-    }
+    if (!trace_level(mask, width, height, options_.simplify_mm / mm_per_px, gain, outers, holes)) return false;
     // Smallest outlines first, so that a hole's parent is the first outline that holds it.
     std::sort(outers.begin(), outers.end(), [](const Outline& a, const Outline& b) { return a.area < b.area; });
     std::vector<std::vector<Ring>> polygons(outers.size());
-    for (std::size_t i = 0; i < outers.size(); ++i) polygons[i].push_back(std::move(outers[i].ring));
+    std::vector<std::size_t> polygon_points(outers.size());
+    for (std::size_t i = 0; i < outers.size(); ++i) {
+      polygon_points[i] = outers[i].ring.size();
+      polygons[i].push_back(std::move(outers[i].ring));
+    }
     for (Outline& hole : holes) {
       bool placed = false;
       for (std::size_t i = 0; i < outers.size() && !placed; ++i) {
+        if (!count_work(1.0)) return false;  // the box test
         if (!box_inside(hole.box, outers[i].box)) continue;
-        work_ += static_cast<double>(polygons[i].front().size());
-        if (work_ > kMaxPictureContainmentTests) {
-          error_ = "the picture has too many holes in large outlines to import (limit " +
-                   std::to_string(static_cast<long long>(kMaxPictureContainmentTests)) + " point tests); use fewer --levels or a smaller picture";
-          return false;
-        }
+        if (!count_work(static_cast<double>(polygons[i].front().size()))) return false;
         if (contains(Polygon{polygons[i].front()}, hole.ring.front())) {
+          // A bridged hole adds its points and the two ends of its bridge.
+          polygon_points[i] += hole.ring.size() + 2;
+          if (polygon_points[i] > kMaxPolygonPoints) {
+            error_ = too_many_points(gain);
+            return false;
+          }
           polygons[i].push_back(std::move(hole.ring));
           placed = true;
         }
@@ -154,17 +212,10 @@ class PictureImporter {
       if (!placed) ++dropped_;  // cannot happen for rings of one mask; counted rather than lost
     }
     for (const std::vector<Ring>& rings : polygons) {
+      // Bridging looks for each hole's nearest outline point.
+      if (!count_work(static_cast<double>(rings.front().size()) * static_cast<double>(rings.size() - 1))) return false;
       const Ring joined = import::bridge_rings(rings);
-      if (joined.size() > kMaxPolygonPoints) {
-        error_ = "an outline of gain " + format_decimal(gain) + " has more than " + std::to_string(kMaxPolygonPoints) +
-                 " points (limit " + std::to_string(kMaxPolygonPoints) + "); use a smaller picture";
-        return false;
-      }
-      if (++primitives_ + 1 > kMaxXmlElements) {
-        error_ = "the picture gives more than " + std::to_string(kMaxXmlElements - 1) + " surfaces (limit " +
-                 std::to_string(kMaxXmlElements - 1) + "); use fewer --levels or a smaller picture";
-        return false;
-      }
+      ++primitives_;
       Surface s;
       s.shape = SurfaceShape::polygon;
       s.gain = gain;
@@ -174,6 +225,7 @@ class PictureImporter {
       e.body = std::move(s);
       out.push_back(std::move(e));
     }
+    if (!out.empty()) ++primitives_;  // the level's group
     return true;
   }
 
@@ -183,8 +235,9 @@ class PictureImporter {
   std::vector<std::string> warnings_;
   std::string error_;
   std::size_t dropped_ = 0;
-  std::size_t primitives_ = 0;
-  double work_ = 0.0;
+  std::size_t primitives_ = 0;  // surfaces and groups given so far, within kMaxImportPrimitives
+  std::size_t points_ = 0;      // outline points kept so far, within kMaxImportPoints
+  double work_ = 0.0;           // within kMaxPictureContainmentTests
 };
 
 }  // namespace

@@ -76,6 +76,108 @@ TEST(Contours, SimplificationStaysWithinItsTolerance) {
   }
 }
 
+// A square spiral one pixel wide, `turns` times round, in a mask of its size: one outline whose
+// points wind in and out again, the shape that makes plain Douglas-Peucker split off a few points
+// at a time.
+std::vector<std::uint8_t> spiral_mask(int side) {
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
+  int x0 = 0, y0 = 0, x1 = side - 1, y1 = side - 1;
+  const auto set = [&](int x, int y) { mask[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)] = 1; };
+  while (x0 + 2 <= x1 && y0 + 2 <= y1) {
+    for (int x = x0; x <= x1; ++x) set(x, y0);
+    for (int y = y0; y <= y1; ++y) set(x1, y);
+    for (int x = x0; x <= x1; ++x) set(x, y1);
+    for (int y = y0 + 2; y <= y1; ++y) set(x0, y);
+    set(x0 + 1, y0 + 2);
+    x0 += 2, y0 += 2, x1 -= 2, y1 -= 2;
+  }
+  return mask;
+}
+
+TEST(Contours, TracingVisitsEveryCrossingOnceWhateverTheShape) {
+  for (const int side : {101, 401}) {
+    const std::vector<std::uint8_t> mask = spiral_mask(side);
+    std::size_t points = 0;
+    const import::TraceStats stats = import::for_each_contour(mask, side, side, [&](Ring& ring) {
+      points += ring.size();
+      return true;
+    });
+    const std::size_t pairs = static_cast<std::size_t>(side + 2) * static_cast<std::size_t>(side + 2);
+    EXPECT_EQ(stats.pairs_scanned, pairs);          // one look at each horizontal sample pair
+    EXPECT_EQ(stats.crossings_visited, points);     // and each outline point made once
+    EXPECT_LE(stats.crossings_visited, 2 * pairs);  // there are two crossings per sample at most
+  }
+}
+
+TEST(Contours, TracingStopsWhenAskedAndTheOuterOutlineComesBeforeItsHoles) {
+  const std::vector<std::uint8_t> mask = {1, 1, 1, 1, 0, 1, 1, 1, 1, 0, 0, 0, 1, 0, 1};
+  std::vector<double> areas;
+  const import::TraceStats stats = import::for_each_contour(mask, 3, 5, [&](Ring& ring) {
+    areas.push_back(import::twice_signed_area(ring));
+    return areas.size() < 2;
+  });
+  EXPECT_TRUE(stats.stopped);
+  ASSERT_EQ(areas.size(), 2u);
+  EXPECT_LT(areas[0], 0.0);  // the frame's outer outline ...
+  EXPECT_GT(areas[1], 0.0);  // ... then its hole; the two pixels below are never traced
+}
+
+// A maze of one-pixel walls and corridors (odd side): the walls one outline, the corridors one
+// hole, both turning at nearly every other pixel.
+std::vector<std::uint8_t> maze_mask(int side) {
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 1);
+  const int cells = (side - 1) / 2;
+  const auto at = [&](int x, int y) -> std::uint8_t& { return mask[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)]; };
+  std::vector<bool> seen(static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells), false);
+  std::mt19937 rng(1);
+  std::vector<std::pair<int, int>> path = {{0, 0}};
+  seen[0] = true;
+  at(1, 1) = 0;
+  constexpr int kSteps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  while (!path.empty()) {
+    const auto [cx, cy] = path.back();
+    int open[4], count = 0;
+    for (int d = 0; d < 4; ++d) {
+      const int nx = cx + kSteps[d][0], ny = cy + kSteps[d][1];
+      if (nx >= 0 && ny >= 0 && nx < cells && ny < cells && !seen[static_cast<std::size_t>(ny * cells + nx)]) open[count++] = d;
+    }
+    if (count == 0) {
+      path.pop_back();
+      continue;
+    }
+    const int d = open[rng() % static_cast<unsigned>(count)];
+    const int nx = cx + kSteps[d][0], ny = cy + kSteps[d][1];
+    seen[static_cast<std::size_t>(ny * cells + nx)] = true;
+    at(2 * cx + 1 + kSteps[d][0], 2 * cy + 1 + kSteps[d][1]) = 0;
+    at(2 * nx + 1, 2 * ny + 1) = 0;
+    path.push_back({nx, ny});
+  }
+  return mask;
+}
+
+TEST(Contours, SimplificationCostIsLinearAndItsCountIsKnownBeforeTheRingEnds) {
+  // The maze's corridors keep most of their corners: a few distance tests per point, and the count
+  // of points kept grows while the ring arrives, so that a caller can refuse it long before its end.
+  const int side = 801;
+  const std::vector<std::uint8_t> mask = maze_mask(side);
+  std::vector<Ring> rings = import::trace_contours(mask, side, side);
+  ASSERT_EQ(rings.size(), 2u);
+  const Ring& corridors = rings[0].size() > rings[1].size() ? rings[0] : rings[1];
+  const std::size_t n = corridors.size();
+  ASSERT_GT(n, 500000u);  // many windows
+  import::SimplifyStats stats;
+  import::RingSimplifier simplifier(0.1, &stats);
+  std::size_t kept_at_half = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    simplifier.add(corridors[i]);
+    if (i == n / 2) kept_at_half = simplifier.kept();
+  }
+  const Ring simple = simplifier.finish();
+  EXPECT_GT(simple.size(), n / 4);
+  EXPECT_LE(stats.distance_tests, 20 * n);  // log2 of the window, 14, at most per point
+  EXPECT_GT(kept_at_half, simple.size() / 4);
+}
+
 TEST(Rings, BridgedRingsFillExactlyAsTheSeparateRingsEvenOdd) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 20; ++trial) {
