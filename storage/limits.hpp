@@ -82,7 +82,7 @@ inline constexpr double kMaxPictureContainmentTests = 4e8;  // outline edges vis
 // Primitives and groups an import may give: the written image's other two elements are its XML
 // declaration and its <vibroimage> root (an SVG title takes two more: <meta> and its <title>).
 inline constexpr std::size_t kMaxImportPrimitives = kMaxXmlElements - 2;
-// Points an SVG import may flatten in all, counted as they are produced: a written image holds a
+// Points an import (SVG or picture) may make in all, counted as they are produced: a written image holds a
 // point in about 16 bytes, so more would not fit the largest image file (4 194 304).
 inline constexpr std::size_t kMaxImportPoints = kMaxImageFileBytes / 16;
 // Outline vertices and bounding boxes an SVG import visits placing its paths' subpaths (the nonzero

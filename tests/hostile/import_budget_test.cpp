@@ -29,7 +29,7 @@ std::string errors_of(const ImportResult& r) {
 }
 
 TEST(ImportBudget, AShapeThatGivesOnePrimitiveCostsOneElement) {
-  // 200 000 small circles are 200 000 dots: within the 249 999 primitives an image may hold (each
+  // 200 000 small circles are 200 000 dots: within the 249 998 primitives an import may make (each
   // once counted twice, as if wrapped in a group, the drawing was refused at its 125 000th circle).
   const std::size_t count = 200'000;
   const ImportResult r = import_svg(svg_of(count, "<circle cx='5' cy='5' r='0.5'/>"), "dots.svg", {});
