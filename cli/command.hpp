@@ -18,6 +18,8 @@ void add_volume_command(CLI::App& vimg, int& exit_code);
 void add_import_command(CLI::App& vimg, int& exit_code);
 void add_compare_command(CLI::App& vimg, int& exit_code);
 void add_study_command(CLI::App& vimg, int& exit_code);
+void add_web_command(CLI::App& vimg, int& exit_code);
+void add_serve_command(CLI::App& vimg, int& exit_code);
 
 // A usage problem found after parsing (e.g. two options that do not go together): prints it in
 // the cmdline format for `program` ("vimg render") and returns kExitUsage.

@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
   add_import_command(app, exit_code);
   add_compare_command(app, exit_code);
   add_study_command(app, exit_code);
+  add_web_command(app, exit_code);
+  add_serve_command(app, exit_code);
   app.require_subcommand(1);
   if (auto code = vimg::cmdline::parse(app, argc, argv)) return *code;
   return exit_code;

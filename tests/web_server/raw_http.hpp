@@ -24,7 +24,7 @@ class RawConnection {
  public:
   explicit RawConnection(int port) {
     fd_ = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    timeval hang_bound{120, 0};
+    timeval hang_bound{60, 0};
     setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &hang_bound, sizeof hang_bound);
     sockaddr_in address{};
     address.sin_family = AF_INET;

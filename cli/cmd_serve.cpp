@@ -1,0 +1,171 @@
+// `vimg serve IMAGE...|DIR [--port N] [--lan] [--actuator P]` (docs/web.md, "Serving"): builds the
+// site of the images into a private temporary folder (or takes DIR, a site `vimg web` wrote),
+// serves it read-only (web/server/web_server.hpp) and prints its URL; each save of an image is
+// compiled again and pushed to the open pages. SIGINT/SIGTERM stop it: the temporary site is
+// removed and it exits 130/143.
+#include <pthread.h>
+#include <signal.h>
+#include <stdlib.h>
+
+#include <cstdio>
+#include <ctime>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "cli/command.hpp"
+#include "web/server/lan_address.hpp"
+#include "web/server/live_site.hpp"
+#include "web/server/terminal_qr.hpp"
+#include "web/site_builder/web_site.hpp"
+
+namespace vimg::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kDefaultPort = 8765;
+
+struct ServeArgs {
+  std::vector<std::string> inputs;
+  int port = kDefaultPort;
+  bool lan = false;
+  std::string actuator;
+};
+
+// A folder only this user can read (mkdtemp: 0700), removed when the command ends.
+class TemporarySite {
+ public:
+  TemporarySite() {
+    std::string pattern = (fs::temp_directory_path() / "vimg-serve-XXXXXX").string();
+    if (mkdtemp(pattern.data())) path_ = pattern;
+  }
+  ~TemporarySite() {
+    std::error_code ec;
+    if (!path_.empty()) fs::remove_all(path_, ec);
+  }
+  TemporarySite(const TemporarySite&) = delete;
+  TemporarySite& operator=(const TemporarySite&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+bool print_diagnostics(const std::vector<Diagnostic>& diagnostics) {
+  for (const Diagnostic& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  return !has_errors(diagnostics);
+}
+
+// Blocks until SIGINT or SIGTERM arrives (returns it) or the server has stopped by itself (0).
+// The signals are blocked in every thread, so they wait here rather than end the process.
+int wait_for_stop_signal(const sigset_t& stop_signals, const web::WebServer& server) {
+  const timespec check_every{1, 0};  // only to notice a server that stopped by itself
+  while (server.running()) {
+    const int signal_number = sigtimedwait(&stop_signals, nullptr, &check_every);
+    if (signal_number > 0) return signal_number;
+  }
+  return 0;
+}
+
+void print_addresses(const ServeArgs& a, int port) {
+  if (!a.lan) {
+    std::printf("vimg serve: %s (Ctrl-C stops)\n", web::site_url("127.0.0.1", port).c_str());
+    return;
+  }
+  const auto lan = web::first_lan_ipv4_address();
+  if (!lan) {
+    std::printf("vimg serve: %s on every interface; no LAN address found (Ctrl-C stops)\n",
+                web::site_url("127.0.0.1", port).c_str());
+    return;
+  }
+  const std::string url = web::site_url(*lan, port);
+  std::printf("vimg serve: %s on the LAN (Ctrl-C stops)\n", url.c_str());
+  if (const auto qr = web::terminal_qr_code(url)) std::printf("%s", qr->c_str());
+}
+
+int run_serve(const ServeArgs& a) {
+  const char* program = "vimg serve";
+  std::error_code ec;
+  const bool serve_folder = a.inputs.size() == 1 && fs::is_directory(a.inputs.front(), ec);
+  for (const std::string& input : a.inputs) {
+    if (!serve_folder && fs::is_directory(input, ec)) {
+      return usage_error(program, input + " is a folder: give either images or one folder of a built site");
+    }
+  }
+  if (serve_folder && !a.actuator.empty()) {
+    return usage_error(program, "--actuator applies to images, not to a built site (" + a.inputs.front() + ")");
+  }
+  // From here SIGINT/SIGTERM wait for wait_for_stop_signal (the server's threads inherit the mask),
+  // so that the site is always removed and the watcher never stops in the middle of a rewrite.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  std::unique_ptr<TemporarySite> temporary;
+  fs::path site;
+  std::vector<fs::path> images;
+  const WebSiteOptions options{a.actuator};
+  if (serve_folder) {
+    site = a.inputs.front();
+    if (!fs::is_regular_file(site / "index.html", ec)) {
+      std::fprintf(stderr, "%s: error: not a built site (no index.html); write one with vimg web IMAGE... --out %s\n",
+                   site.string().c_str(), site.string().c_str());
+      return kExitFailure;
+    }
+  } else {
+    temporary = std::make_unique<TemporarySite>();
+    if (temporary->path().empty()) {
+      std::fprintf(stderr, "%s: cannot create a temporary folder in %s\n", program, fs::temp_directory_path().c_str());
+      return kExitFailure;
+    }
+    site = temporary->path();
+    images.assign(a.inputs.begin(), a.inputs.end());
+    if (!print_diagnostics(build_web_site(images, options, site))) return kExitFailure;
+  }
+  web::WebServerOptions server_options;
+  server_options.site_dir = site;
+  server_options.host = a.lan ? "0.0.0.0" : "127.0.0.1";
+  server_options.port = a.port;
+  web::LiveSite live(server_options, images, [&](const fs::path& image) -> std::optional<std::string> {
+    if (!print_diagnostics(update_web_image(image, options, site))) return std::nullopt;
+    std::fprintf(stderr, "%s: %s changed: pushed to the open pages\n", program, image.string().c_str());
+    return web_image_name(image);
+  });
+  if (const auto problem = live.start()) {
+    std::fprintf(stderr, "%s: %s\n", program, problem->c_str());
+    return kExitFailure;
+  }
+  print_addresses(a, live.server().port());
+  std::fflush(stdout);
+  const int signal_number = wait_for_stop_signal(stop_signals, live.server());
+  live.stop();
+  if (signal_number == 0) {
+    std::fprintf(stderr, "%s: the server stopped\n", program);
+    return kExitFailure;
+  }
+  return signal_number == SIGTERM ? cmdline::kExitSigterm : cmdline::kExitSigint;
+}
+
+}  // namespace
+
+void add_serve_command(CLI::App& vimg, int& exit_code) {
+  CLI::App* sub = vimg.add_subcommand("serve", "serve images (or a built site) to a browser and push each save to it");
+  auto a = std::make_shared<ServeArgs>();
+  sub->add_option("INPUT", a->inputs, "images (.vimg, .xml, .png), or one folder written by vimg web")->required();
+  sub->add_option("--port", a->port, "TCP port (default " + std::to_string(kDefaultPort) + "; 0: any free port, printed)")
+      ->check(CLI::Range(0, 65535));
+  sub->add_flag("--lan", a->lan, "listen on every interface and print the LAN URL with a QR code (default: 127.0.0.1 only)");
+  sub->add_option("--actuator", a->actuator, "actuator profile (assets/profiles/*.xml) the page renders for (default: ideal)");
+  sub->footer("Read-only: GET and HEAD of the site's files only, no listing, nothing outside the site. Images are "
+              "watched: each save is compiled again and pushed to the open pages (Server-Sent Events at /events). "
+              "One log line per request on stderr. SIGINT/SIGTERM remove the temporary site and exit 130/143. "
+              "See docs/web.md.");
+  sub->callback([a, &exit_code] { exit_code = run_serve(*a); });
+}
+
+}  // namespace vimg::cli

@@ -1,0 +1,92 @@
+#pragma once
+// `vimg serve` as a user runs it: a child process with --port 0 whose printed URL is read from its
+// stdout (the test waits for that line, it never sleeps). The page's files come from a folder of
+// stand-ins (VIMG_WEB_ASSETS), so that no Emscripten build is needed; TMPDIR is the test's own
+// folder, so that the temporary site can be looked at.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace vimg::test {
+
+inline const std::string kVimg = VIMG_BINARY_DIR "/cli/vimg";
+
+// index.html, vimg.js, vimg.wasm and worklet.js stand-ins in `dir`.
+inline void write_stand_in_assets(const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  for (const char* name : {"index.html", "vimg.js", "vimg.wasm", "worklet.js"}) {
+    std::ofstream(dir / name) << "stand-in " << name << "\n";
+  }
+}
+
+class ServeProcess {
+ public:
+  // Starts `vimg serve ARGS... --port 0` with VIMG_WEB_ASSETS=assets and TMPDIR=tmp.
+  ServeProcess(const std::vector<std::string>& args, const std::filesystem::path& assets, const std::filesystem::path& tmp) {
+    int out[2];
+    if (pipe2(out, O_CLOEXEC) != 0) return;
+    pid_ = fork();
+    if (pid_ == 0) {
+      dup2(out[1], STDOUT_FILENO);
+      setenv("VIMG_WEB_ASSETS", assets.c_str(), 1);
+      setenv("TMPDIR", tmp.c_str(), 1);
+      std::vector<std::string> all{kVimg, "serve"};
+      all.insert(all.end(), args.begin(), args.end());
+      all.insert(all.end(), {"--port", "0"});
+      std::vector<char*> argv;
+      for (std::string& a : all) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execv(kVimg.c_str(), argv.data());
+      _exit(127);
+    }
+    close(out[1]);
+    out_fd_ = out[0];
+  }
+  ~ServeProcess() {
+    if (pid_ > 0 && !reaped_) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
+    if (out_fd_ >= 0) close(out_fd_);
+  }
+  ServeProcess(const ServeProcess&) = delete;
+  ServeProcess& operator=(const ServeProcess&) = delete;
+
+  // Reads stdout until the line with the URL; its port, or 0 if the process ended first.
+  int wait_for_port() {
+    while (true) {
+      const std::size_t at = out_.find("http://127.0.0.1:");
+      if (at != std::string::npos && out_.find('/', at + 17) != std::string::npos) {
+        return std::stoi(out_.substr(at + 17));
+      }
+      char buffer[1024];
+      const ssize_t n = read(out_fd_, buffer, sizeof buffer);
+      if (n <= 0) return 0;
+      out_.append(buffer, static_cast<std::size_t>(n));
+    }
+  }
+  const std::string& printed() const { return out_; }
+
+  // Sends the signal and returns the exit status (-1 if a signal killed it).
+  int stop_with(int signal_number) {
+    kill(pid_, signal_number);
+    int status = 0;
+    waitpid(pid_, &status, 0);
+    reaped_ = true;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  int out_fd_ = -1;
+  bool reaped_ = false;
+  std::string out_;
+};
+
+}  // namespace vimg::test
