@@ -5,10 +5,10 @@
 // removed and it exits 130/143.
 #include <pthread.h>
 #include <signal.h>
-#include <stdlib.h>
 
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <system_error>
@@ -16,7 +16,7 @@
 
 #include "cli/command.hpp"
 #include "web/server/lan_address.hpp"
-#include "web/server/live_site.hpp"
+#include "web/server/served_images.hpp"
 #include "web/server/terminal_qr.hpp"
 #include "web/site_builder/web_site.hpp"
 
@@ -34,30 +34,6 @@ struct ServeArgs {
   bool lan = false;
   std::string actuator;
 };
-
-// A folder only this user can read (mkdtemp: 0700), removed when the command ends.
-class TemporarySite {
- public:
-  TemporarySite() {
-    std::string pattern = (fs::temp_directory_path() / "vimg-serve-XXXXXX").string();
-    if (mkdtemp(pattern.data())) path_ = pattern;
-  }
-  ~TemporarySite() {
-    std::error_code ec;
-    if (!path_.empty()) fs::remove_all(path_, ec);
-  }
-  TemporarySite(const TemporarySite&) = delete;
-  TemporarySite& operator=(const TemporarySite&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-bool print_diagnostics(const std::vector<Diagnostic>& diagnostics) {
-  for (const Diagnostic& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
-  return !has_errors(diagnostics);
-}
 
 // Blocks until SIGINT or SIGTERM arrives (returns it) or the server has stopped by itself (0).
 // The signals are blocked in every thread, so they wait here rather than end the process.
@@ -106,44 +82,38 @@ int run_serve(const ServeArgs& a) {
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
-  std::unique_ptr<TemporarySite> temporary;
-  fs::path site;
-  std::vector<fs::path> images;
-  const WebSiteOptions options{a.actuator};
+  web::WebServerOptions server_options;
+  server_options.host = a.lan ? "0.0.0.0" : "127.0.0.1";
+  server_options.port = a.port;
+  std::unique_ptr<web::WebServer> built_site;  // DIR
+  std::unique_ptr<web::ServedImages> images;   // IMAGE...
   if (serve_folder) {
-    site = a.inputs.front();
-    if (!fs::is_regular_file(site / "index.html", ec)) {
+    server_options.site_dir = a.inputs.front();
+    if (!fs::is_regular_file(server_options.site_dir / "index.html", ec)) {
       std::fprintf(stderr, "%s: error: not a built site (no index.html); write one with vimg web IMAGE... --out %s\n",
-                   site.string().c_str(), site.string().c_str());
+                   a.inputs.front().c_str(), a.inputs.front().c_str());
+      return kExitFailure;
+    }
+    built_site = std::make_unique<web::WebServer>(server_options);
+    if (const auto problem = built_site->start()) {
+      std::fprintf(stderr, "%s: %s\n", program, problem->c_str());
       return kExitFailure;
     }
   } else {
-    temporary = std::make_unique<TemporarySite>();
-    if (temporary->path().empty()) {
-      std::fprintf(stderr, "%s: cannot create a temporary folder in %s\n", program, fs::temp_directory_path().c_str());
-      return kExitFailure;
-    }
-    site = temporary->path();
-    images.assign(a.inputs.begin(), a.inputs.end());
-    if (!print_diagnostics(build_web_site(images, options, site))) return kExitFailure;
+    images = std::make_unique<web::ServedImages>(std::vector<fs::path>(a.inputs.begin(), a.inputs.end()),
+                                                 WebSiteOptions{a.actuator}, server_options,
+                                                 [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+    if (!images->start()) return kExitFailure;
   }
-  web::WebServerOptions server_options;
-  server_options.site_dir = site;
-  server_options.host = a.lan ? "0.0.0.0" : "127.0.0.1";
-  server_options.port = a.port;
-  web::LiveSite live(server_options, images, [&](const fs::path& image) -> std::optional<std::string> {
-    if (!print_diagnostics(update_web_image(image, options, site))) return std::nullopt;
-    std::fprintf(stderr, "%s: %s changed: pushed to the open pages\n", program, image.string().c_str());
-    return web_image_name(image);
-  });
-  if (const auto problem = live.start()) {
-    std::fprintf(stderr, "%s: %s\n", program, problem->c_str());
-    return kExitFailure;
-  }
-  print_addresses(a, live.server().port());
+  web::WebServer& server = built_site ? *built_site : images->server();
+  print_addresses(a, server.port());
   std::fflush(stdout);
-  const int signal_number = wait_for_stop_signal(stop_signals, live.server());
-  live.stop();
+  const int signal_number = wait_for_stop_signal(stop_signals, server);
+  if (images) {
+    images->stop();  // the watcher first: a rewrite under way ends
+  } else {
+    built_site->stop();
+  }
   if (signal_number == 0) {
     std::fprintf(stderr, "%s: the server stopped\n", program);
     return kExitFailure;

@@ -1,18 +1,23 @@
 #pragma once
 // A client that sends exactly the bytes a test gives (no normalisation of "/../", no encoding, any
 // method) to 127.0.0.1:PORT and reads what comes back: how an attacker or curl --path-as-is talks.
-// Reads block; SO_RCVTIMEO only bounds a hang (a broken server), it times nothing.
+// Reads block; each wait ends after kHangBound at the latest, which only bounds a hang (a broken
+// server, or an event that never comes while keep-alive comments do), it times nothing.
 #include <arpa/inet.h>
+#include <poll.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <cctype>
+#include <chrono>
 #include <cerrno>
 #include <map>
 #include <string>
 
 namespace vimg::test {
+
+inline constexpr std::chrono::seconds kHangBound{60};
 
 struct HttpResponse {
   int status = 0;  // 0: no response (the connection closed or failed first)
@@ -24,8 +29,6 @@ class RawConnection {
  public:
   explicit RawConnection(int port) {
     fd_ = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    timeval hang_bound{60, 0};
-    setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &hang_bound, sizeof hang_bound);
     sockaddr_in address{};
     address.sin_family = AF_INET;
     address.sin_port = htons(static_cast<std::uint16_t>(port));
@@ -50,16 +53,18 @@ class RawConnection {
 
   // Reads until `text` has arrived (true) or the connection ends (false); everything read is in received().
   bool read_until(const std::string& text) {
+    const auto give_up = std::chrono::steady_clock::now() + kHangBound;
     while (received_.find(text) == std::string::npos) {
-      if (!read_some()) return false;
+      if (!read_some(give_up)) return false;
     }
     return true;
   }
   // Reads until `text` has arrived `count` times (each SSE message comes in a chunk of its own, so
   // a message is never split by the chunked framing).
   bool read_until_count(const std::string& text, int count) {
+    const auto give_up = std::chrono::steady_clock::now() + kHangBound;
     while (count_of(text) < count) {
-      if (!read_some()) return false;
+      if (!read_some(give_up)) return false;
     }
     return true;
   }
@@ -68,11 +73,18 @@ class RawConnection {
     for (std::size_t at = received_.find(text); at != std::string::npos; at = received_.find(text, at + text.size())) ++n;
     return n;
   }
-  void read_to_end() { while (read_some()) {} }
+  void read_to_end() {
+    const auto give_up = std::chrono::steady_clock::now() + kHangBound;
+    while (read_some(give_up)) {}
+  }
   const std::string& received() const { return received_; }
 
  private:
-  bool read_some() {
+  // False at the end of the stream, on an error, or at `give_up`.
+  bool read_some(std::chrono::steady_clock::time_point give_up) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - std::chrono::steady_clock::now());
+    pollfd p{fd_, POLLIN, 0};
+    if (left.count() <= 0 || poll(&p, 1, static_cast<int>(left.count())) <= 0) return false;
     char buffer[4096];
     ssize_t n = 0;
     do {

@@ -6,10 +6,20 @@
 // inverted, which most phone cameras still read.
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace vimg::web {
 
 inline constexpr int kQrQuietModules = 2;
+
+// The modules of the QR code of `text` (libqrencode, level L, byte mode): `width` x `width`,
+// row by row, true for dark; nothing if the text cannot be encoded.
+struct QrModules {
+  int width = 0;
+  std::vector<bool> dark;
+  bool is_dark(int row, int column) const { return dark[static_cast<std::size_t>(row * width + column)]; }
+};
+std::optional<QrModules> qr_modules(const std::string& text);
 
 // The lines of the drawing, each ending in "\n"; nothing if the text cannot be encoded.
 std::optional<std::string> terminal_qr_code(const std::string& text);
