@@ -72,6 +72,7 @@ void EditorApp::frame() {
   problems_.draw(kToolsWidth + canvas_w, top + props_h, kPropertiesWidth, H - top - kStatusHeight - props_h,
                  session_.editor(), session_.load_diagnostics(), layout_);
   compare_.draw(kToolsWidth + 20.0f, top + 20.0f, std::min(640.0f, canvas_w - 40.0f), std::min(420.0f, canvas_h - 40.0f));
+  audition_.draw(kToolsWidth + 40.0f, top + 40.0f);
   draw_status_bar(W, H);
 
   draw_dialogs();
@@ -175,6 +176,14 @@ void EditorApp::draw_menu_bar() {
     }
     if (ImGui::MenuItem("Save Gesture (.csv)...", nullptr, false, playback_.can_save_gesture())) {
       prompt_path(PathPrompt::save_gesture, "gesture.csv");
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Audition on a device", nullptr, audition_.serving())) {
+      if (session_.path().empty()) {
+        notices_.report_error("Audition on a device plays the saved file: save the image first (Ctrl+S).");
+      } else {
+        audition_.start(session_.path(), playback_.feel().path().string());
+      }
     }
     ImGui::EndMenu();
   }

@@ -8,6 +8,7 @@
 //   Playback                       playing mode, gesture recording and the oscilloscope
 //   LibraryPanel                   the example and user images
 //   CompareWindow                  the predicted confusion of images chosen in the library
+//   AuditionWindow                 the saved document served to a phone or tablet on the LAN
 // editor_app.cpp: window, loop and keys; app_frame.cpp: the frame, menu and status bar;
 // app_dialogs.cpp: the dialogs and the file actions they lead to.
 #include <SDL.h>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "editor/audition_window.hpp"
 #include "editor/canvas_view.hpp"
 #include "editor/compare_window.hpp"
 #include "editor/core/document_session.hpp"
@@ -77,6 +79,7 @@ class EditorApp {
   ProblemList problems_;
   LibraryPanel library_;
   CompareWindow compare_;
+  AuditionWindow audition_{notices_};
   FileChooser chooser_;
 
   SDL_Window* window_ = nullptr;
