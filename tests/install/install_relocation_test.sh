@@ -54,6 +54,15 @@ set -e
 grep -q "not a shipped profile either (shipped: .*lra-175hz-drv2605l" unknown.err || { cat unknown.err; fail "the shipped names are not listed"; }
 [ ! -e never.csv ] || fail "an output was written for an unknown profile"
 
+# The web player, when the web preset was built: installed with the data, and `vimg web` from the
+# moved prefix writes a site with it.
+if [ -f "$build/share/vibroimage/web/vimg.wasm" ]; then
+  [ -f "$data/web/vimg.wasm" ] && [ -f "$data/web/index.html" ] || fail "the web player is not installed"
+  "$prefix/bin/vimg" web "$data/examples/smiley.vimg" --out site >web.log 2>&1 || { cat web.log; fail "vimg web from the moved prefix"; }
+  cmp -s site/vimg.wasm "$data/web/vimg.wasm" || fail "the site's vimg.wasm is not the installed one"
+  [ -s site/images/smiley.vsc ] || fail "the site lacks the compiled smiley"
+fi
+
 # The installed editor, from the empty folder, lists the shipped examples and profiles.
 editor="$prefix/bin/vimg-editor"
 source "$source_dir/tests/editor/gui_driver.sh"
