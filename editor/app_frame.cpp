@@ -167,7 +167,10 @@ void EditorApp::draw_menu_bar() {
     ImGui::MenuItem("Snap to Grid", "S", &canvas_.snap());
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Mode")) {
+  const bool mode_menu = ImGui::BeginMenu("Mode");
+  layout_.print("menu_mode", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                ImGui::GetItemRectSize().y);
+  if (mode_menu) {
     const bool playing = playback_.on();
     if (ImGui::MenuItem("Drawing", "F5", !playing)) set_play_mode(false);
     if (ImGui::MenuItem("Playing", "F5", playing)) set_play_mode(true);
@@ -178,7 +181,10 @@ void EditorApp::draw_menu_bar() {
       prompt_path(PathPrompt::save_gesture, "gesture.csv");
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Audition on a device", nullptr, audition_.serving())) {
+    const bool audition = ImGui::MenuItem("Audition on a device", nullptr, audition_.serving());
+    layout_.print("menu_audition", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                  ImGui::GetItemRectSize().y);
+    if (audition) {
       if (session_.path().empty()) {
         notices_.report_error("Audition on a device plays the saved file: save the image first (Ctrl+S).");
       } else {

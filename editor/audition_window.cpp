@@ -47,6 +47,7 @@ void AuditionWindow::start(const std::filesystem::path& image, const std::string
   url_ = web::site_url(lan ? *lan : "127.0.0.1", served_->server().port());
   qr_ = web::qr_modules(url_);
   notices_.status = "Audition: " + url_;
+  message("serving " + image_.filename().string() + " at " + url_);
 }
 
 void AuditionWindow::stop() {
