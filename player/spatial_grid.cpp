@@ -14,8 +14,14 @@ SpatialGrid::SpatialGrid(std::span<const Bounds2M> boxes, double items_per_cell)
   // Square-ish cells, about items_per_cell boxes per cell.
   const double cells = std::max(1.0, static_cast<double>(boxes.size()) / std::max(items_per_cell, 0.1));
   const double cell_size = std::sqrt(w * h / cells);
-  cells_x_ = std::clamp(static_cast<int>(std::ceil(w / cell_size)), 1, kMaxCellsPerAxis);
-  cells_y_ = std::clamp(static_cast<int>(std::ceil(h / cell_size)), 1, kMaxCellsPerAxis);
+  // Clamped before the conversion: a box a billion times longer than wide (or a width that
+  // overflows to infinity) asks for more cells than an int holds.
+  const auto axis_cells = [](double extent, double cell) {
+    const double n = std::ceil(extent / cell);
+    return static_cast<int>(std::clamp(std::isnan(n) ? double{kMaxCellsPerAxis} : n, 1.0, double{kMaxCellsPerAxis}));
+  };
+  cells_x_ = axis_cells(w, cell_size);
+  cells_y_ = axis_cells(h, cell_size);
   inv_cell_w_ = cells_x_ / w;
   inv_cell_h_ = cells_y_ / h;
 
@@ -37,14 +43,15 @@ SpatialGrid::SpatialGrid(std::span<const Bounds2M> boxes, double items_per_cell)
   }
 }
 
+// NaN (an infinite extent times a zero scale) counts as the first cell.
 int SpatialGrid::cell_x(double x_m) const {
   const double c = std::floor((x_m - extent_.min_x_m) * inv_cell_w_);
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(cells_x_ - 1)));
+  return std::isnan(c) ? 0 : static_cast<int>(std::clamp(c, 0.0, static_cast<double>(cells_x_ - 1)));
 }
 
 int SpatialGrid::cell_y(double y_m) const {
   const double c = std::floor((y_m - extent_.min_y_m) * inv_cell_h_);
-  return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(cells_y_ - 1)));
+  return std::isnan(c) ? 0 : static_cast<int>(std::clamp(c, 0.0, static_cast<double>(cells_y_ - 1)));
 }
 
 }  // namespace vimg
