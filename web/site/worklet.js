@@ -16,7 +16,14 @@ class VimgProcessor extends AudioWorkletProcessor {
     this.peak = 0;
     this.blocks = 0;
     this.eventIds = [];
-    this.port.onmessage = (e) => this.onMessage(e.data);
+    // A message that fails (a wasm that does not instantiate, say) is reported, never swallowed.
+    this.port.onmessage = (e) => {
+      try {
+        this.onMessage(e.data);
+      } catch (err) {
+        this.port.postMessage({ type: 'error', text: String((err && err.stack) || err) });
+      }
+    };
   }
 
   instantiate(bytes) {
