@@ -9,24 +9,13 @@
 #include "storage/image_io.hpp"
 #include "storage/import/import.hpp"
 #include "storage/limits.hpp"
+#include "tests/hostile/svg_drawing.hpp"
 
 namespace vimg {
 namespace {
 
-std::string svg_of(std::size_t count, const std::string& shape) {
-  std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='100mm' height='100mm' viewBox='0 0 100 100'>\n";
-  svg.reserve(count * (shape.size() + 8));
-  for (std::size_t i = 0; i < count; ++i) svg += shape + "\n";
-  return svg + "</svg>\n";
-}
-
-std::string errors_of(const ImportResult& r) {
-  std::string out;
-  for (const Diagnostic& d : r.diagnostics) {
-    if (d.severity == Diagnostic::Severity::error) out += d.to_string() + "\n";
-  }
-  return out;
-}
+using test::errors_of;
+using test::svg_of;
 
 TEST(ImportBudget, AShapeThatGivesOnePrimitiveCostsOneElement) {
   // 200 000 small circles are 200 000 dots: within the 249 998 primitives an import may make (each

@@ -12,6 +12,7 @@
 #include "storage/image_io.hpp"
 #include "storage/import/import.hpp"
 #include "storage/limits.hpp"
+#include "tests/hostile/svg_drawing.hpp"
 #include "tests/hostile/bounded_child.hpp"
 
 namespace vimg {
@@ -20,21 +21,8 @@ namespace {
 constexpr std::size_t kMemoryCapBytes = std::size_t{512} << 20;
 constexpr int kCpuCapSeconds = 30;
 
-// 100 x 100 mm, one user unit a millimetre; `count` copies of `shape`, one a line (line n + 1).
-std::string svg_of(std::size_t count, const std::string& shape, const std::string& head = "") {
-  std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='100mm' height='100mm' viewBox='0 0 100 100'>" + head + "\n";
-  svg.reserve(count * (shape.size() + 1) + 200);
-  for (std::size_t i = 0; i < count; ++i) svg += shape + "\n";
-  return svg + "</svg>\n";
-}
-
-std::string errors_of(const ImportResult& r) {
-  std::string out;
-  for (const Diagnostic& d : r.diagnostics) {
-    if (d.severity == Diagnostic::Severity::error) out += d.to_string() + "\n";
-  }
-  return out;
-}
+using test::errors_of;
+using test::svg_of;
 
 void collect_ids(const std::vector<Element>& elements, std::set<std::string>& ids) {
   for (const Element& e : elements) {
