@@ -138,6 +138,7 @@ void add_gesture_command(CLI::App& vimg, int& exit_code) {
   CLI::App* gesture = vimg.add_subcommand("gesture", "synthesise a gesture file from a path at a given speed and event rate");
   gesture->require_subcommand(1);
   add_gesture_import(*gesture, exit_code);
+  add_gesture_predict(*gesture, exit_code);
   gesture->footer("Angles: degrees, 0 along +x, increasing towards +y (y points down).");
   struct Kind {
     const char* name;

@@ -1,5 +1,6 @@
 // `vimg render IMAGE --gesture G.csv --out OUT.(wav|csv) [--rate HZ] [--actuator P]
-//  [--signal drive|acceleration] [--equalize]` (spec section 4, docs/actuators.md).
+//  [--signal drive|acceleration] [--equalize] [--touch-latency-ms L [--touch-prediction on|off]]`
+// (spec section 4, docs/actuators.md, docs/latency.md).
 #include <algorithm>
 #include <cmath>
 #include <csignal>
@@ -18,6 +19,7 @@
 #include "player/drive_sinks.hpp"
 #include "player/gesture.hpp"
 #include "player/offline_render.hpp"
+#include "primitives/touch_prediction/touch_latency_defaults.hpp"
 #include "player/scene.hpp"
 #include "storage/export/clip_metadata.hpp"
 #include "storage/image_io.hpp"
@@ -38,7 +40,25 @@ struct RenderArgs {
   std::string register_trace;  // DRV2605L register traffic CSV; needs a drv2605l profile
   std::string signal = "drive";  // drive | acceleration (the modelled acceleration of the actuator)
   bool equalize = false;         // shape the drive to the actuator's response
+  // A simulated touch panel that reports every row this late, and the live player's compensation.
+  double touch_latency_ms = -1.0;  // < 0: no panel (the gesture is played exactly)
+  std::string touch_prediction = "on";
 };
+
+// Progress on stderr for renders longer than this much gesture time, every kProgressStep of it.
+constexpr double kProgressAfter_s = 60.0;
+constexpr double kProgressStep_s = 30.0;
+
+struct Progress {
+  double next_s = kProgressStep_s;
+};
+
+void report_progress(double rendered_s, double end_s, void* context) {
+  auto& p = *static_cast<Progress*>(context);
+  if (rendered_s < p.next_s) return;
+  std::fprintf(stderr, "vimg render: %.0f of %.0f s rendered\n", std::min(rendered_s, end_s), end_s);
+  p.next_s = rendered_s + kProgressStep_s;
+}
 
 // The checks CLI11 cannot express; returns an exit code on a usage error.
 std::optional<int> check_render_args(const RenderArgs& a) {
@@ -47,6 +67,8 @@ std::optional<int> check_render_args(const RenderArgs& a) {
     return usage_error("vimg render", "--out must end in .wav, .csv, .ahap or .haptic: '" + a.out + "'");
   if (!a.register_trace.empty() && a.actuator.empty())
     return usage_error("vimg render", "--register-trace needs --actuator with a drv2605l profile");
+  if (a.touch_latency_ms < 0.0 && a.touch_prediction != "on")
+    return usage_error("vimg render", "--touch-prediction needs --touch-latency-ms (the simulated panel)");
   if (!a.register_trace.empty() && a.signal == "acceleration")
     return usage_error("vimg render", "--register-trace records the drive: it does not go with --signal acceleration");
   return std::nullopt;
@@ -72,6 +94,14 @@ int run_render(const RenderArgs& a) {
     return kExitFailure;
   }
 
+  OfflineRenderOptions options;
+  if (a.touch_latency_ms >= 0.0) {
+    if (const std::string problem = panel_simulation_problem(*gesture.gesture); !problem.empty()) {
+      std::fprintf(stderr, "%s: error: %s\n", a.gesture.c_str(), problem.c_str());
+      return kExitFailure;
+    }
+    options.panel = PanelSimulation{a.touch_latency_ms * 1e-3, a.touch_prediction == "on", kDefaultTouchPredictionModel};
+  }
   ActuatorProfile profile;  // the ideal actuator: resonance 175 Hz as the DOT carrier
   if (!a.actuator.empty()) {
     const ProfileLoadResult loaded_profile = load_actuator_profile(a.actuator);
@@ -92,7 +122,6 @@ int run_render(const RenderArgs& a) {
     sink = std::make_unique<CsvSink>(a.out, a.signal);
   }
   sink->set_new_file_mode(NewFileMode::of(a.image));  // a new output takes the image's permission bits
-  OfflineRenderOptions options;
   options.sample_rate_hz = static_cast<double>(a.rate_hz);
   const OutputSignal signal = a.signal == "acceleration" ? OutputSignal::acceleration : OutputSignal::drive;
   if (a.equalize && profile.response.model == ResponseModel::erm) {
@@ -101,6 +130,11 @@ int run_render(const RenderArgs& a) {
   // SIGINT/SIGTERM only set a flag; the render stops at the next block and the output is abandoned.
   const SignalRestScope signals;
   options.should_stop = [] { return rest_requested(); };
+  Progress progress;
+  if (gesture.gesture->end_time_s() - std::min(0.0, gesture.gesture->start_time_s()) > kProgressAfter_s) {
+    options.progress = report_progress;
+    options.progress_context = &progress;
+  }
   std::unique_ptr<Drv2605lTraceSink> trace;
   if (!a.register_trace.empty()) {
     try {
@@ -153,6 +187,14 @@ void add_render_command(CLI::App& vimg, int& exit_code) {
   sub->add_flag("--equalize", a->equalize,
                 "shape the drive so that the modelled acceleration follows the design across the actuator's band "
                 "(attenuates the resonance; |drive| stays <= 1)");
+  sub->add_option("--touch-latency-ms", a->touch_latency_ms,
+                  "simulate a touch panel that reports every row this many ms late (decimals allowed), with the live "
+                  "players' compensation (docs/latency.md)")
+      ->check(cmdline::finite_in(0.0, kMaxTouchPanelLatency_s * 1e3));
+  sub->add_option("--touch-prediction", a->touch_prediction,
+                  "on (default): predict each finger the panel's latency ahead, as the live players do; off: the late "
+                  "positions alone")
+      ->check(CLI::IsMember({"on", "off"}));
   sub->footer("Limits (docs/limits.md): a gesture of at most " + std::to_string(kMaxGestureRows) + " rows, " +
               std::to_string(static_cast<int>(kMaxGestureDurationS)) + " s from time 0 and " +
               std::to_string(kMaxCsvFileBytes >> 20) + " MiB; an image of at most " + std::to_string(kMaxImageFileBytes >> 20) +

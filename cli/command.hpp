@@ -14,6 +14,8 @@ void add_convert_command(CLI::App& vimg, int& exit_code);
 void add_info_command(CLI::App& vimg, int& exit_code);
 void add_render_command(CLI::App& vimg, int& exit_code);
 void add_gesture_command(CLI::App& vimg, int& exit_code);
+// `vimg gesture predict` (cmd_gesture_predict.cpp), a subcommand of `vimg gesture`.
+void add_gesture_predict(CLI::App& gesture, int& exit_code);
 void add_volume_command(CLI::App& vimg, int& exit_code);
 void add_import_command(CLI::App& vimg, int& exit_code);
 void add_compare_command(CLI::App& vimg, int& exit_code);

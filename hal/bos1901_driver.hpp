@@ -28,6 +28,7 @@
 #include <cstdint>
 
 #include "hal/actuator_profile.hpp"
+#include "hal/bos1901_registers.hpp"
 #include "hal/fault_log.hpp"
 #include "hal/transfer_retry.hpp"
 #include "hal/serviced_device.hpp"
@@ -55,6 +56,8 @@ class Bos1901Driver final : public DriveSink, public ServicedDevice {
   void write(std::span<const float> drive, double block_start_time_s) override;
   void close() override;
   bool paces_stream() const override { return true; }
+  // A full FIFO ahead of the sample being written (kFifoDepth samples).
+  double output_latency_s() const override { return static_cast<double>(bos1901::kFifoDepth * sample_period_us_) * 1e-6; }
 
   FaultLog& faults() override { return faults_; }
   const DeviceLink& link() const override { return link_; }

@@ -26,6 +26,7 @@ class Drv2605lTraceSink final : public DriveSink {
   void open(double sample_rate_hz) override;
   void write(std::span<const float> drive, double block_start_time_s) override;
   void close() override;
+  double output_latency_s() const override { return next_.output_latency_s(); }
 
   const std::optional<std::string>& error() const { return error_; }  // "FILE: problem"
   // The permission bits of the trace file if it is new (NewFileMode::of the image it is made from).

@@ -46,6 +46,7 @@ class SdlAudioSink final : public DriveSink {
   void write(std::span<const float> drive, double block_start_time_s) override;
   void close() override;
   bool paces_stream() const override { return true; }
+  double output_latency_s() const override { return buffer_latency_s(); }
 
   static constexpr double kStallTimeout_s = 0.5;
 

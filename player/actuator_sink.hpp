@@ -32,6 +32,7 @@ class ActuatorSink final : public DriveSink {
   void close() override { output_.close(); }
   bool paces_stream() const override { return output_.paces_stream(); }
   std::size_t min_block_samples() const override { return output_.min_block_samples(); }
+  double output_latency_s() const override { return output_.output_latency_s(); }
 
   // False when the chain is the identity (e.g. equalizing an ideal, voice-coil or ERM actuator, or
   // the drive of any): the drive passes unchanged.

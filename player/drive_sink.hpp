@@ -32,6 +32,12 @@ class DriveSink {
   // real-time renderer never writes smaller blocks. Valid after open(). Files and memory take
   // anything.
   virtual std::size_t min_block_samples() const { return 1; }
+
+  // The output path's own latency: from a sample's block time to the actuator receiving it (a
+  // sound card's buffers, a driver's FIFO). Valid after open(). The live tracker predicts each
+  // finger this much further ahead, on top of the touch panel's latency (docs/latency.md). Files,
+  // memory and drivers that apply a sample when written: 0.
+  virtual double output_latency_s() const { return 0.0; }
 };
 
 }  // namespace vimg

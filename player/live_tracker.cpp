@@ -38,6 +38,8 @@ bool LiveTracker::apply(const TouchEvent& e, double now_s) {
     f.anchor_x_m = x;
     f.anchor_y_m = y;
     f.pressure = pressure;
+    reset_finger_history(f.history);
+    add_finger_event(f.history, e.time_s, e.x_mm, e.y_mm);
     return true;
   }
   f.pressure = pressure;
@@ -52,6 +54,7 @@ bool LiveTracker::apply(const TouchEvent& e, double now_s) {
   f.event_time_s = std::max(f.event_time_s, e.time_s);
   f.event_x_m = x;
   f.event_y_m = y;
+  add_finger_event(f.history, e.time_s, e.x_mm, e.y_mm);
   const double dt = e.time_s - f.anchor_time_s;
   if (dt < options_.min_interval_s) return true;  // too close for a usable velocity: position only
   const double raw_vx = (x - f.anchor_x_m) / dt;
@@ -76,6 +79,17 @@ Vec3 LiveTracker::reckoned_position(const Finger& f, double time_s) const {
   return {f.event_x_m + f.vx_m_per_s * ahead, f.event_y_m + f.vy_m_per_s * ahead, 0.0};
 }
 
+void LiveTracker::set_prediction(double horizon_s, TouchPredictionModel model) {
+  horizon_s_ = std::isfinite(horizon_s) && horizon_s > 0.0 ? horizon_s : 0.0;
+  model_ = model;
+}
+
+Vec3 LiveTracker::position_at(const Finger& f, double time_s) const {
+  if (horizon_s_ <= 0.0) return reckoned_position(f, time_s);
+  const PredictedPosition p = predict_finger_at(f.history, std::max(time_s, f.event_time_s), horizon_s_, model_);
+  return {p.x_mm * kMetresPerMm, p.y_mm * kMetresPerMm, 0.0};
+}
+
 std::size_t LiveTracker::steps_at(double time_s, double, std::span<FingerStep, kMaxFingers> out) {
   std::size_t n = 0;
   for (int i = 0; i < kMaxFingers; ++i) {
@@ -84,7 +98,8 @@ std::size_t LiveTracker::steps_at(double time_s, double, std::span<FingerStep, k
     FingerStep& s = out[n++];
     s.finger = i;
     s.touch_id = f.touch_id;
-    s.position_m = f.down ? reckoned_position(f, time_s) : Vec3{f.event_x_m, f.event_y_m, 0.0};
+    const Vec3 lifted_at = horizon_s_ > 0.0 && f.rendered_valid ? f.rendered_m : Vec3{f.event_x_m, f.event_y_m, 0.0};
+    s.position_m = f.down ? position_at(f, time_s) : lifted_at;
     s.previous_position_m = f.rendered_valid ? f.rendered_m : s.position_m;
     // Velocity is reported only while the events are fresh enough to trust it.
     const bool fresh = f.down && time_s - f.event_time_s <= options_.max_extrapolation_s;

@@ -9,6 +9,15 @@
 // most max_extrapolation_s, then held. When the next event arrives the position continues from the
 // reckoned point towards it over the following step, so the path stays continuous.
 // Stale events (older than stale_after_s at the time they are applied) are dropped, except `up`.
+//
+// Touch-latency compensation (docs/latency.md): with a prediction horizon H > 0
+// (set_prediction()), the position at step time t is the finger predictor's position at t + H
+// (primitives/touch_prediction/finger_predictor.hpp, predict_finger_at: from each finger's own
+// events, fading back to the last position after 50-100 ms without events). H is the touch
+// panel's latency plus the output path's (RealtimeRenderer sets it from its options and the
+// sink). A lift ends the touch at once where it is felt: its final step ends at the position
+// already rendered, so nothing is rendered past the lift, not even the way back to the up event's
+// position. H = 0 (the default) keeps the dead reckoning above.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +25,7 @@
 
 #include "player/finger_step.hpp"
 #include "player/touch_event.hpp"
+#include "primitives/touch_prediction/finger_predictor.hpp"
 
 namespace vimg {
 
@@ -40,6 +50,11 @@ class LiveTracker {
 
   std::uint64_t dropped_events() const { return dropped_; }
 
+  // Predict each finger horizon_s ahead of the step time with `model`; horizon_s <= 0 (or not
+  // finite) turns prediction off. Call before the first step or between steps, never during one.
+  void set_prediction(double horizon_s, TouchPredictionModel model = kDefaultTouchPredictionModel);
+  double prediction_horizon_s() const { return horizon_s_; }
+
  private:
   struct Finger {
     bool down = false;
@@ -57,13 +72,17 @@ class LiveTracker {
     bool has_velocity = false;
     Vec3 rendered_m;              // position at the last step
     bool rendered_valid = false;
+    FingerHistory history;        // mm, for the predictor
   };
   Vec3 reckoned_position(const Finger& f, double time_s) const;
+  Vec3 position_at(const Finger& f, double time_s) const;
 
   LiveTrackerOptions options_;
   std::array<Finger, kMaxFingers> fingers_{};
   std::uint32_t next_touch_id_ = 1;
   std::uint64_t dropped_ = 0;
+  double horizon_s_ = 0.0;
+  TouchPredictionModel model_ = kDefaultTouchPredictionModel;
 };
 
 }  // namespace vimg

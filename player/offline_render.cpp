@@ -10,12 +10,14 @@
 
 namespace vimg {
 
-OfflineRenderResult render_gesture(const Scene& scene, const Gesture& gesture, DriveSink& sink,
-                                   const OfflineRenderOptions& options) {
+namespace {
+
+// Either source of finger steps: the exact gesture, or the simulated late panel.
+template <class Source>
+OfflineRenderResult render_steps(const Scene& scene, Source& playback, DriveSink& sink, const OfflineRenderOptions& options) {
   OfflineRenderResult result;
   const double rate = options.sample_rate_hz;
   const double dt = 1.0 / rate;
-  GesturePlayback playback(gesture);
   ContactMixer mixer(options.max_contacts);
   mixer.set_scene(&scene);
   result.start_time_s = std::min(0.0, playback.start_time_s());
@@ -49,11 +51,24 @@ OfflineRenderResult render_gesture(const Scene& scene, const Gesture& gesture, D
       }
     }
     sink.write(std::span<const float>(block.data(), filled), block_start_s);
+    if (options.progress) options.progress(block_start_s + static_cast<double>(filled) * dt, end_s, options.progress_context);
   }
   sink.close();
   result.samples = n;
   result.refused_contacts = mixer.refused_contacts();
   return result;
+}
+
+}  // namespace
+
+OfflineRenderResult render_gesture(const Scene& scene, const Gesture& gesture, DriveSink& sink,
+                                   const OfflineRenderOptions& options) {
+  if (options.panel) {
+    SimulatedPanel panel(gesture, *options.panel);
+    return render_steps(scene, panel, sink, options);
+  }
+  GesturePlayback playback(gesture);
+  return render_steps(scene, playback, sink, options);
 }
 
 }  // namespace vimg

@@ -3,10 +3,12 @@
 // `vimg render` and the tests.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include "player/drive_sink.hpp"
 #include "player/gesture.hpp"
 #include "player/scene.hpp"
+#include "player/simulated_panel.hpp"
 
 namespace vimg {
 
@@ -19,6 +21,13 @@ struct OfflineRenderOptions {
   // Asked before every block (e.g. "has SIGINT arrived?"); true ends the render at once, without
   // closing the sink, so that the caller can abandon the output. Null: never.
   bool (*should_stop)() = nullptr;
+  // Set: the gesture reaches the renderer through a simulated late panel and the live tracker's
+  // compensation (player/simulated_panel.hpp) instead of exactly. Check panel_simulation_problem().
+  std::optional<PanelSimulation> panel;
+  // Called after each block with the time rendered so far and the time the gesture ends (for
+  // progress on long renders). Null: never.
+  void (*progress)(double rendered_s, double end_s, void* context) = nullptr;
+  void* progress_context = nullptr;
 };
 
 struct OfflineRenderResult {

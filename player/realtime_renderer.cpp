@@ -81,6 +81,11 @@ std::optional<std::string> RealtimeRenderer::start() {
   const std::size_t block = choose_block_samples(options_, sink_.min_block_samples());
   block_samples_.store(block, std::memory_order_relaxed);
   impl_->block.assign(block, 0.0f);
+  const TouchCompensation& touch = options_.touch;
+  const double panel_s = std::isfinite(touch.panel_latency_s) ? std::clamp(touch.panel_latency_s, 0.0, kMaxTouchPanelLatency_s) : 0.0;
+  const double horizon_s = touch.enabled ? panel_s + std::max(0.0, sink_.output_latency_s()) : 0.0;
+  impl_->tracker.set_prediction(horizon_s, touch.model);  // before the thread starts
+  prediction_horizon_s_.store(impl_->tracker.prediction_horizon_s(), std::memory_order_relaxed);
   telemetry_.reset();
   render_total_ns_.store(0, std::memory_order_relaxed);
   render_max_ns_.store(0, std::memory_order_relaxed);
@@ -296,6 +301,7 @@ LoopStats RealtimeRenderer::stats() const {
   s.render_max_s = static_cast<double>(render_max_ns_.load(std::memory_order_relaxed)) * 1e-9;
   s.scene_generation = scene_generation_.load(std::memory_order_relaxed);
   s.scenes_superseded = scenes_superseded_.load(std::memory_order_relaxed);
+  s.prediction_horizon_s = prediction_horizon_s_.load(std::memory_order_relaxed);
   return s;
 }
 

@@ -43,11 +43,20 @@
 #include "player/live_tracker.hpp"
 #include "player/scene.hpp"
 #include "player/touch_event.hpp"
+#include "primitives/touch_prediction/touch_latency_defaults.hpp"
 #include "realtime/loop_telemetry.hpp"
 #include "realtime/realtime_priority.hpp"
 #include "realtime/spsc_ring.hpp"
 
 namespace vimg {
+
+// Touch-latency compensation (docs/latency.md): each finger is predicted to the moment its
+// samples reach the actuator, panel_latency_s + the sink's output_latency_s() after the step time.
+struct TouchCompensation {
+  bool enabled = false;  // the library renders what it is told; the players turn it on (docs/latency.md)
+  double panel_latency_s = kDefaultTouchPanelLatency_s;  // 0 .. kMaxTouchPanelLatency_s
+  TouchPredictionModel model = kDefaultTouchPredictionModel;
+};
 
 struct RealtimeOptions {
   double sample_rate_hz = 8000.0;  // 1 .. 48000
@@ -60,6 +69,7 @@ struct RealtimeOptions {
   std::size_t max_contacts = 512;
   std::size_t event_queue_capacity = 1024;
   LiveTrackerOptions tracker;
+  TouchCompensation touch;
   // > 0: ask for SCHED_FIFO at this priority (1..99) for the render thread. Needs the privilege
   // (CAP_SYS_NICE or an rtprio limit); without it the thread keeps normal priority and
   // LoopStats::priority says why (describe()).
@@ -90,6 +100,8 @@ struct LoopStats {
   double render_max_s = 0.0;
   std::uint64_t scene_generation = 0;   // the set_scene() call now playing (0: none yet)
   std::uint64_t scenes_superseded = 0;  // replaced in the mailbox before the render thread took them
+  // How far ahead fingers are predicted: the panel's latency plus the sink's output latency (0: off).
+  double prediction_horizon_s = 0.0;
 };
 
 class RealtimeRenderer {
@@ -175,6 +187,7 @@ class RealtimeRenderer {
   std::atomic<int> priority_requested_{0};
   std::atomic<int> priority_error_{0};
   std::atomic<bool> priority_granted_{false};
+  std::atomic<double> prediction_horizon_s_{0.0};
 };
 
 }  // namespace vimg

@@ -83,6 +83,7 @@ int run(const PlayerArgs& args) {
   RealtimeOptions realtime;
   realtime.sample_rate_hz = args.rate_hz;
   realtime.realtime_priority = args.realtime_priority;
+  realtime.touch = args.touch;
   // Threads: this one (UI, control), the render thread (renderer) and, for a hardware output, the
   // device service thread, which the output's sink runs between open() and close() (started by
   // renderer.start(), stopped by renderer.stop()): it formats the driver's fault codes into the

@@ -51,6 +51,17 @@ ArgsResult parse_player_args(const std::vector<std::string>& arguments) {
                  "SCHED_FIFO priority 1..99 of the render thread, 0 for none (needs CAP_SYS_NICE or an rtprio "
                  "limit; without it the thread runs normally)")
       ->check(CLI::Range(0, 99));
+  double touch_latency_ms = kDefaultTouchPanelLatency_s * 1e3;
+  std::string touch_prediction = "on";
+  app.add_option("--touch-latency-ms", touch_latency_ms,
+                 "the touch panel's latency in ms (decimals allowed): each finger is predicted this far ahead, plus the "
+                 "output's own latency (docs/latency.md)")
+      ->capture_default_str()
+      ->check(cmdline::finite_in(0.0, kMaxTouchPanelLatency_s * 1e3));
+  app.add_option("--touch-prediction", touch_prediction,
+                 "on (default): feel each finger where it is, not where the panel last saw it; off: the panel's late "
+                 "positions")
+      ->check(CLI::IsMember({"on", "off"}));
   app.add_flag("--calibrate", a.calibrate, "run the actuator's calibration (DRV2605L auto-calibration), store it, exit");
   std::string study, responses, gesture;
   auto* study_option = app.add_option("--study", study,
@@ -91,6 +102,8 @@ ArgsResult parse_player_args(const std::vector<std::string>& arguments) {
   } else if (a.image_path.empty() && !a.calibrate) {
     return usage_error("IMAGE is required (or --calibrate, or --study)");
   }
+  a.touch.panel_latency_s = touch_latency_ms * 1e-3;
+  a.touch.enabled = touch_prediction == "on";
   if (!actuator.empty()) a.actuator_path = actuator;
   if (scale->count() > 0) a.px_per_mm = px_per_mm;
   if (!window.empty()) {

@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "player/realtime_renderer.hpp"
+
 namespace vimg::player_app {
 
 struct PlayerArgs {
@@ -18,6 +20,8 @@ struct PlayerArgs {
   bool calibrate = false;
   bool equalize = false;       // equalize the drive for the actuator (ActuatorChain, --equalize)
   int realtime_priority = 80;  // SCHED_FIFO for the render thread: steady latency on a busy device
+  // Touch-latency compensation (docs/latency.md): on by default, --touch-latency-ms, --touch-prediction.
+  TouchCompensation touch{true, kDefaultTouchPanelLatency_s, kDefaultTouchPredictionModel};
   // The matching test (docs/player.md, "Matching test"): --study instead of IMAGE.
   std::optional<std::string> study_path;
   std::string participant;  // [A-Za-z0-9_-]{1,64}

@@ -151,6 +151,7 @@ int run_live_study(StudySession& session) {
   RealtimeOptions realtime;
   realtime.sample_rate_hz = session.args.rate_hz;
   realtime.realtime_priority = session.args.realtime_priority;
+  realtime.touch = session.args.touch;
   RealtimeRenderer renderer(session.drive, realtime);
   if (auto error = renderer.start()) {
     std::fprintf(stderr, "vimg-player: %s\n", error->c_str());

@@ -27,6 +27,7 @@ class StudyStreamSink final : public DriveSink {
   void close() override {}
   bool paces_stream() const override { return output_.paces_stream(); }
   std::size_t min_block_samples() const override { return output_.min_block_samples(); }
+  double output_latency_s() const override { return output_.output_latency_s(); }
 
   // Closes the output (zero drive, the file completed). Once.
   void finish();

@@ -25,6 +25,7 @@ class DriveTap final : public DriveSink {
   void close() override { output_.close(); }
   bool paces_stream() const override { return output_.paces_stream(); }
   std::size_t min_block_samples() const override { return output_.min_block_samples(); }
+  double output_latency_s() const override { return output_.output_latency_s(); }
 
   double sample_rate_hz() const { return sample_rate_hz_.load(std::memory_order_acquire); }
   // The renderer-clock time of the first sample written (NaN before the first block).

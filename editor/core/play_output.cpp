@@ -13,6 +13,7 @@ class HalPlayOutput final : public PlayOutput {
   void close() override { output_->sink().close(); }
   bool paces_stream() const override { return output_->sink().paces_stream(); }
   std::size_t min_block_samples() const override { return output_->sink().min_block_samples(); }
+  double output_latency_s() const override { return output_->sink().output_latency_s(); }
   std::vector<std::string> take_messages() override { return output_->take_messages(); }
 
  private:
@@ -27,6 +28,7 @@ class SilentPlayOutput final : public PlayOutput {
   void close() override { sink_->close(); }
   bool paces_stream() const override { return sink_->paces_stream(); }
   std::size_t min_block_samples() const override { return sink_->min_block_samples(); }
+  double output_latency_s() const override { return sink_->output_latency_s(); }
 
  private:
   std::unique_ptr<DriveSink> sink_;

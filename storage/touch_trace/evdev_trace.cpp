@@ -9,6 +9,7 @@
 #include "storage/limits.hpp"
 #include "storage/read_file.hpp"
 #include "storage/touch_trace/evdev_line.hpp"
+#include "storage/touch_trace/touch_log.hpp"
 
 namespace vimg {
 namespace {
@@ -297,6 +298,7 @@ class TraceBuilder {
 }  // namespace
 
 TouchTraceParseResult parse_touch_trace(std::string_view text, const std::string& file_name) {
+  if (looks_like_touch_log(text)) return parse_touch_log(text, file_name);
   DiagnosticList list(file_name);
   TraceBuilder builder(list);
   EvdevLineReader reader;

@@ -9,6 +9,7 @@
 // Each SYN_REPORT frame gives each finger whose contact changed one sample: `down` when it
 // starts, `move`, `up` when it ends (at its last position). Times are relative to the first event.
 // A recording of several devices (getevent) is read for the first device that reports touches.
+// A `;`-separated touch log (touch_log.hpp) is read as such.
 // Limits: kMaxTouchTraceFileBytes, kMaxGestureRows samples, kMaxTouchTraceFinger fingers at once.
 // Messages: at most kMaxDiagnosticsPerFile (DiagnosticList). Reading stops at an event after an
 // error; the bad lines before that event beyond the limit are counted on the summary line.

@@ -41,6 +41,8 @@ class FakeDeviceSink final : public DriveSink {
   }
   void close() override {}
   bool paces_stream() const override { return true; }
+  // The queue in front of the device, as a sound card's buffers.
+  double output_latency_s() const override { return rate_ > 0.0 ? static_cast<double>(queue_samples_) / rate_ : 0.0; }
 
   struct Block {
     double time_s;           // renderer clock
