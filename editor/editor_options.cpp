@@ -33,7 +33,8 @@ bool parse_window_size(const std::string& text, int& width_px, int& height_px) {
 
 ParsedOptions parse_editor_options(int argc, char** argv) {
   EditorOptions o;
-  std::string output = "audio", size;
+  std::string output = "audio", size, touch_prediction = "on";
+  double touch_latency_ms = 0.0;
   CLI::App app("vimg-editor: draw vibrotactile images and play them (F5).");
   cmdline::configure(app, "vimg-editor");
   app.add_option("FILE", o.file, "a .vimg or .png vibrotactile image to open");
@@ -50,6 +51,14 @@ ParsedOptions parse_editor_options(int argc, char** argv) {
                  "actuator profile to design for (a file, or a shipped profile's name such as lra-175hz-drv2605l): the scope shows its predicted acceleration "
                  "and the canvas marks primitives it barely renders; default: ideal");
   app.add_option("--rate", o.sample_rate_hz, "output sample rate, Hz")->check(cmdline::finite_in(1.0, 48000.0));
+  touch_latency_ms = o.touch.panel_latency_s * 1e3;
+  app.add_option("--touch-latency-ms", touch_latency_ms,
+                 "the pointing device's latency in ms (decimals allowed): playing mode feels each finger this far "
+                 "ahead plus the output's own latency (docs/latency.md)")
+      ->capture_default_str()
+      ->check(cmdline::finite_in(0.0, kMaxTouchPanelLatency_s * 1e3));
+  app.add_option("--touch-prediction", touch_prediction, "on (default) or off: predict each finger in playing mode")
+      ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--recovery-dir", o.recovery_dir, "where autosave keeps the recovery file");
   app.add_option("--autosave-interval", o.autosave_interval_s, "seconds between autosaves of unsaved changes")
       ->check(cmdline::finite_in(0.1, 86400.0));
@@ -66,6 +75,8 @@ ParsedOptions parse_editor_options(int argc, char** argv) {
   if (const auto code = cmdline::parse(app, argc, argv)) return ParsedOptions{std::nullopt, *code};
   o.output = *parse_output_choice(output).choice;
   if (!size.empty()) parse_window_size(size, o.width_px, o.height_px);
+  o.touch.panel_latency_s = touch_latency_ms * 1e-3;
+  o.touch.enabled = touch_prediction == "on";
   return ParsedOptions{o, cmdline::kExitOk};
 }
 

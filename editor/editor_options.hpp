@@ -4,6 +4,7 @@
 #include <string>
 
 #include "editor/output_choice.hpp"
+#include "player/realtime_renderer.hpp"
 
 namespace vimg::editor {
 
@@ -23,6 +24,9 @@ struct EditorOptions {
   bool print_layout = false;        // print where widgets are (for scripted tests)
   int benchmark_frames = 0;         // render this many frames as fast as possible, report, exit
   bool play_at_start = false;
+  // Touch-latency compensation in playing mode (docs/latency.md): --touch-latency-ms (default the
+  // mouse's, the editor's usual input), --touch-prediction; the Mode menu changes both.
+  TouchCompensation touch{true, kDefaultMousePanelLatency_s, kDefaultTouchPredictionModel};
 };
 
 struct ParsedOptions {

@@ -30,6 +30,7 @@ std::optional<std::string> PlaySession::start(const Image& image) {
   RealtimeOptions options;
   options.sample_rate_hz = sample_rate_hz_;
   options.realtime_priority = realtime_priority_;
+  options.touch = touch_;
   renderer_ = std::make_unique<RealtimeRenderer>(*tap_, options);
   latest_generation_ = renderer_->set_scene(compile_scene(image));
   start_time_s_ = monotonic_s();

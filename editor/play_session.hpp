@@ -39,6 +39,8 @@ class PlaySession {
 
   // Starts playing `image`. Returns an error message on failure.
   std::optional<std::string> start(const Image& image);
+  // Touch-latency compensation for the next start() (docs/latency.md); off until set.
+  void set_touch_compensation(const TouchCompensation& touch) { touch_ = touch; }
   // Plays the changed document from now on (the renderer cross-fades; never refused).
   void update(const Image& image);
   // The last start() or update() is what the renderer plays (false while it waits for a running
@@ -79,6 +81,7 @@ class PlaySession {
   std::unique_ptr<PlayOutput> output_;
   std::unique_ptr<DriveTap> tap_;
   std::unique_ptr<RealtimeRenderer> renderer_;
+  TouchCompensation touch_;
   double sample_rate_hz_;
   int realtime_priority_;
   std::uint64_t latest_generation_ = 0;

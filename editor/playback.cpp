@@ -24,6 +24,7 @@ Playback::Playback(const EditorOptions& options, Notices& notices, LayoutLog& la
                    std::filesystem::path recent_folders_store)
     : options_(options), notices_(notices), layout_(layout),
       choice_(feel_, notices, layout, std::move(recent_folders_store)) {
+  touch_ = options_.touch;
   if (!options_.actuator.empty()) {
     choice_.choose(options_.actuator);
   } else {
@@ -39,6 +40,7 @@ void Playback::set_on(bool on, const Image& image) {
       play_ = std::make_unique<PlaySession>([choice](std::string& error) { return make_output(choice, error); },
                                             options_.sample_rate_hz);
     }
+    play_->set_touch_compensation(touch_);
     if (auto error = play_->start(image)) {
       notices_.report_error("cannot play to " + options_.output.text + ": " + *error);
       return;

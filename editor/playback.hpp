@@ -76,6 +76,9 @@ class Playback {
     if (play_) play_->set_recording(!play_->recording());
   }
   bool has_session() const { return play_ != nullptr; }
+  // Touch-latency compensation (from the command line; the Mode menu changes it): applies from the
+  // next start of playing mode.
+  TouchCompensation& touch() { return touch_; }
   std::optional<std::string> save_gesture(const std::string& path) const;
 
  private:
@@ -84,6 +87,7 @@ class Playback {
   LayoutLog& layout_;
   std::unique_ptr<PlaySession> play_;
   bool on_ = false;
+  TouchCompensation touch_;
   bool mouse_finger_down_ = false;
   std::uint64_t played_change_ = 0;
   std::vector<float> scope_samples_;
