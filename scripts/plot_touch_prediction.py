@@ -57,7 +57,7 @@ def svg(rows):
         x = pad + a * 170
         out.append(f'<line x1="{x}" y1="{height + 25}" x2="{x + 20}" y2="{height + 25}" stroke="{colour}" stroke-width="2"/>')
         out.append(f'<text x="{x + 25}" y="{height + 29}">{name}</text>')
-    out.append(f'<text x="4" y="{pad - 14}">mean error, px (12.72 px/mm)</text>')
+    out.append(f'<text x="{pad + 3 * 170}" y="{height + 29}">mean error, px (12.72 px/mm)</text>')
     out.append("</svg>")
     return "\n".join(out) + "\n"
 
