@@ -104,5 +104,20 @@ TEST(RenderTouchLatency, ThePanelOptionsAreCheckedAndCompensationBringsTheOnsetB
   EXPECT_LT(std::abs(on - exact), 0.5 * (off - exact)) << "compensation brings it back";
 }
 
+TEST(RenderProgress, ARenderOfMoreThanAMinuteOfGestureReportsItsProgress) {
+  Temp t;
+  // 10 mm at 0.125 mm/s: 80 s of gesture.
+  ASSERT_EQ(test::run_command(kVimg + " gesture line --from 5,40 --to 15,40 --speed 0.125 --rate 60 --out " + t.at("g.csv")).exit_code, 0);
+  const auto run = test::run_command(kVimg + " render " VIMG_SOURCE_DIR "/assets/examples/smiley.vimg --gesture " + t.at("g.csv") +
+                                     " --rate 1000 --out " + t.at("o.wav"));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("vimg render: 30 of 80 s rendered"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("vimg render: 60 of 80 s rendered"), std::string::npos) << run.out;
+  // A short render stays quiet.
+  ASSERT_EQ(test::run_command(kVimg + " gesture line --from 5,40 --to 15,40 --speed 100 --out " + t.at("s.csv")).exit_code, 0);
+  EXPECT_EQ(test::run_command(kVimg + " render " VIMG_SOURCE_DIR "/assets/examples/smiley.vimg --gesture " + t.at("s.csv") +
+                              " --out " + t.at("s.wav")).out, "");
+}
+
 }  // namespace
 }  // namespace vimg
