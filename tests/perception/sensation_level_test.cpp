@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -121,6 +122,22 @@ TEST(SensationLevel, SilenceIsFeltNowhere) {
   EXPECT_EQ(levels.felt_block.size(), 24u);  // 12000 samples: 23 blocks and a zero-padded one
   for (auto felt : levels.felt_block) EXPECT_EQ(felt, 0);
   EXPECT_TRUE(sensation_levels(std::vector<double>{}).felt_block.empty());
+}
+
+// docs/perception.md: a block is felt when a frame overlapping it has a band above threshold and
+// the block is not all zeros. Four blocks of 512: a full-scale 250 Hz sine, silence, the sine again,
+// then silence but for one sample of 1e-9. The frames that straddle blocks 0-1 and 2-3 are felt
+// (the sine is 32 dB above threshold), so blocks 1 and 3 have a felt frame over them; block 1 is
+// all zeros and is not felt, block 3 holds one nonzero sample and is.
+TEST(SensationLevel, ABlockIsFeltOnlyIfNotAllZeros) {
+  const auto sine = test::partials_signal(1.0, {{1.0, 250.0}});
+  std::vector<double> x(4 * 512, 0.0);
+  for (std::size_t n = 0; n < 512; ++n) x[n] = x[1024 + n] = sine[n];
+  x[1536 + 300] = 1e-9;
+  const SensationLevels levels = sensation_levels(x);
+  EXPECT_EQ(levels.felt_block, (std::vector<std::uint8_t>{1, 0, 1, 1}));
+  x[1536 + 300] = 0.0;
+  EXPECT_EQ(sensation_levels(x).felt_block, (std::vector<std::uint8_t>{1, 0, 1, 0}));
 }
 
 TEST(SensationLevel, FeltBlocksFollowTheSignal) {
