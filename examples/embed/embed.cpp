@@ -1,5 +1,8 @@
 // Embedding vibroimage: load an image, feed a finger path, get the drive samples.
-//   embed IMAGE.vimg       prints "SAMPLES RMS PEAK" of a straight swipe across the canvas
+//   embed IMAGE.vimg [SAMPLES.txt]   prints "SAMPLES RMS PEAK" of a straight swipe across the
+//                                    canvas; with SAMPLES.txt, also every sample, one a line
+//                                    (shortest round-trip form, as `vimg render --out X.csv`)
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -9,8 +12,8 @@
 #include "storage/image_io.hpp"
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: embed IMAGE.vimg\n");
+  if (argc != 2 && argc != 3) {
+    std::fprintf(stderr, "usage: embed IMAGE.vimg [SAMPLES.txt]\n");
     return 2;
   }
   const vimg::LoadResult loaded = vimg::load_image_file(argv[1]);
@@ -37,5 +40,15 @@ int main(int argc, char** argv) {
   }
   const double rms = sink.samples().empty() ? 0.0 : std::sqrt(sum_squares / double(sink.samples().size()));
   std::printf("%zu %.6f %.6f\n", sink.samples().size(), rms, peak);
+  if (argc == 3) {
+    std::FILE* out = std::fopen(argv[2], "w");
+    if (!out) return 1;
+    for (const float s : sink.samples()) {
+      char text[32];
+      *std::to_chars(text, text + sizeof text - 1, s).ptr = '\0';
+      std::fprintf(out, "%s\n", text);
+    }
+    if (std::fclose(out) != 0) return 1;
+  }
   return 0;
 }

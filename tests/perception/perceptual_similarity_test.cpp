@@ -54,16 +54,68 @@ TEST(PerceptualSimilarity, IdenticalSignalsAreOne) {
   EXPECT_EQ(s.level_difference_db, 0.0);
 }
 
-TEST(PerceptualSimilarity, IsSymmetricAndWithinZeroOne) {
+// The similarity is docs/perception.md's composition of its parts, computed here from the parts
+// (ST-SIM over the blocks either signal makes felt, the sensation levels) by the documented
+// equations: S = min(clamp(ST-SIM(a|b)), clamp(ST-SIM(b|a))), v = min(1, max felt / 10 dB),
+// D = max over bands |felt_a - felt_b|, L = 2^(-D / 20 dB), similarity = (1 - v (1 - S)) L.
+TEST(PerceptualSimilarity, IsTheDocumentedCompositionOfStructureVisibilityAndLevel) {
   const auto features = analyse_all({test::dot_signal(kSeconds), test::line_signal(kSeconds), test::surface_signal(kSeconds),
-                                     test::surface_signal(kSeconds, 0.3, 70.0)});
-  for (const auto& a : features) {
-    for (const auto& b : features) {
-      const double ab = perceptual_similarity(a, b).value, ba = perceptual_similarity(b, a).value;
-      EXPECT_DOUBLE_EQ(ab, ba);
-      EXPECT_GE(ab, 0.0);
-      EXPECT_LE(ab, 1.0);
+                                     test::surface_signal(kSeconds, 0.3, 70.0),
+                                     // two faint textures, felt less than 10 dB: v < 1 between them
+                                     test::surface_signal(kSeconds, 0.1), test::surface_signal(kSeconds, 0.1, 70.0)});
+  const auto clamp01 = [](double x) { return std::clamp(x, 0.0, 1.0); };
+  int faint_pairs = 0;
+  for (std::size_t i = 0; i < features.size(); ++i) {
+    for (std::size_t j = 0; j < features.size(); ++j) {
+      if (i == j) continue;
+      const PerceptualFeatures &a = features[i], &b = features[j];
+      std::vector<std::uint8_t> felt(std::min(a.stsim.blocks, b.stsim.blocks));
+      for (std::size_t k = 0; k < felt.size(); ++k) felt[k] = a.levels.felt_block.at(k) || b.levels.felt_block.at(k);
+      const auto ab = stsim_over_blocks(a.stsim, b.stsim, felt), ba = stsim_over_blocks(b.stsim, a.stsim, felt);
+      ASSERT_TRUE(ab && ba);
+      const double S = std::min(clamp01(ab->value), clamp01(ba->value));
+      const double v = std::min(1.0, std::max(a.levels.max_felt_db(), b.levels.max_felt_db()) / 10.0);
+      double D = 0.0;
+      for (std::size_t band = 0; band < kSensationBands; ++band) {
+        D = std::max(D, std::abs(a.levels.felt_db(band) - b.levels.felt_db(band)));
+      }
+      const double L = std::pow(2.0, -D / 20.0);
+      const PerceptualSimilarity s = perceptual_similarity(a, b);
+      SCOPED_TRACE(std::to_string(i) + " against " + std::to_string(j));
+      EXPECT_DOUBLE_EQ(s.stsim_ab, ab->value);
+      EXPECT_DOUBLE_EQ(s.stsim_ba, ba->value);
+      EXPECT_DOUBLE_EQ(s.structure, S);
+      EXPECT_DOUBLE_EQ(s.visibility, v);
+      EXPECT_DOUBLE_EQ(s.level_difference_db, D);
+      EXPECT_NEAR(s.value, (1.0 - v * (1.0 - S)) * L, 1e-12);
+      faint_pairs += v < 1.0;
     }
+  }
+  EXPECT_EQ(faint_pairs, 2) << "the faint textures no longer exercise a visibility below 1";
+}
+
+// A signal against its negative: the same spectrum and levels (D = 0, L = 1), a temporal term of
+// -1 in every block, so ST-SIM is 0 both ways (docs/perception.md: a negative temporal term gives
+// 0) and S = 0: the similarity is 1 - v, which fades with the sensation level. A 250 Hz sine 5 dB
+// above threshold (the 0.1 um threshold at 250 Hz, 10 m/s^2 full scale: amplitude
+// 1e-7 (2 pi 250)^2 10^(5/20) / 10) gives v = 0.5 within the level's 0.5 dB accuracy there; at full
+// scale (32 dB) v = 1 and the two are told apart completely.
+TEST(PerceptualSimilarity, ASignalAndItsNegativeDifferOnlyInStructure) {
+  const double omega = 2.0 * 3.141592653589793 * 250.0;
+  const double five_db = 1e-7 * omega * omega * std::pow(10.0, 5.0 / 20.0) / 10.0;
+  for (const double amplitude : {five_db, 1.0}) {
+    SCOPED_TRACE(amplitude);
+    const auto x = test::partials_signal(kSeconds, {{amplitude, 250.0}});
+    std::vector<double> negative(x.size());
+    for (std::size_t n = 0; n < x.size(); ++n) negative[n] = -x[n];
+    const auto a = analyse(x), b = analyse(negative);
+    const PerceptualSimilarity s = perceptual_similarity(a, b);
+    EXPECT_EQ(s.structure, 0.0);
+    EXPECT_EQ(s.level_difference_db, 0.0);
+    EXPECT_EQ(s.level, 1.0);
+    const double felt_db = a.levels.max_felt_db();
+    EXPECT_NEAR(felt_db, amplitude == 1.0 ? 32.16 : 5.0, 0.5);
+    EXPECT_DOUBLE_EQ(s.value, 1.0 - std::min(1.0, felt_db / 10.0));
   }
 }
 
@@ -92,7 +144,12 @@ TEST(PerceptualSimilarity, AStrongAndAFaintVersionOfOneTextureDiffer) {
   EXPECT_NEAR(s.level, std::exp2(-12.04 / 20.0), 1e-3);
   EXPECT_LT(s.value, 0.7);
   const auto p = predicted_confusion({{1.0, s.value}, {s.value, 1.0}});
-  EXPECT_GT(p[0][0], 0.95);
+  // Alone, p(faint | strong) = 1 / (1 + exp((1 - similarity) / tau)), tau = 0.1, with the similarity
+  // S L between 0.95 L and L: between 2.3 % and 3.2 % (docs/perception.md: "3 %").
+  const double L = std::exp2(-20.0 * std::log10(0.8 / 0.2) / 20.0);
+  EXPECT_GT(p[0][1], 1.0 / (1.0 + std::exp((1.0 - 0.95 * L) / 0.1)));
+  EXPECT_LE(p[0][1], 1.0 / (1.0 + std::exp((1.0 - L) / 0.1)));
+  EXPECT_DOUBLE_EQ(p[0][0] + p[0][1], 1.0);
   EXPECT_TRUE(likely_confused_pairs(p).empty());
 }
 
@@ -125,7 +182,19 @@ TEST(PredictedConfusion, TwoIdenticalSignalsSplitEvenlyAndAreFlagged) {
 TEST(PredictedConfusion, DotLineAndSurfaceArePredictedApart) {
   const PerceptionMatrix p = confusion_of({test::dot_signal(kSeconds), test::line_signal(kSeconds), test::surface_signal(kSeconds)});
   print("dot, line, surface", p);
-  for (std::size_t i = 0; i < 3; ++i) EXPECT_GE(p[i][i], 0.9) << i;
+  // Distinct primitives (docs/perception.md): each pair's similarity below 0.35, so by the choice
+  // equation each diagonal is at least 1 / (1 + 2 exp(-0.65 / 0.1)) = 0.997.
+  const auto features = analyse_all({test::dot_signal(kSeconds), test::line_signal(kSeconds), test::surface_signal(kSeconds)});
+  const PerceptionMatrix sim = similarity_matrix(features);
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) {
+      if (i != j) {
+        EXPECT_LT(sim[i][j], 0.35) << i << ", " << j;
+      }
+    }
+  }
+  const double floor = 1.0 / (1.0 + 2.0 * std::exp(-0.65 / 0.1));
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_GE(p[i][i], floor) << i;
   EXPECT_TRUE(likely_confused_pairs(p).empty());
 }
 

@@ -4,7 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
+#include <map>
+#include <string>
 
 #include "tests/player_study/study_process.hpp"
 
@@ -12,6 +17,13 @@ namespace vimg::study_test {
 namespace {
 
 using PlayerStudy = PlayerStudyTest;
+
+// Little-endian fields of a RIFF file.
+std::uint32_t le16(const std::string& bytes, std::size_t at) {
+  return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes.at(at))) |
+         static_cast<std::uint32_t>(static_cast<unsigned char>(bytes.at(at + 1))) << 8;
+}
+std::uint32_t le32(const std::string& bytes, std::size_t at) { return le16(bytes, at) | le16(bytes, at + 2) << 16; }
 
 TEST_F(PlayerStudy, AScriptedRunOfTwoSetsOfFourImagesRecordsThePlanAndTheResponses) {
   // The shipped example: 2 sets x 4 images x 5 repetitions.
@@ -48,11 +60,50 @@ TEST_F(PlayerStudy, AScriptedRunOfTwoSetsOfFourImagesRecordsThePlanAndTheRespons
         << r.out;
   }
   EXPECT_NE(r.out.find("vimg-player: all 40 trials done"), std::string::npos) << r.out;
-  // The output received every trial's rubbing: a complete WAV, not silent.
+  // The output received every trial's rubbing: a complete WAV (RIFF/WAVE as Microsoft's
+  // multimedia specification defines it: chunks of a four-letter id, a little-endian length and the
+  // data), 32-bit float mono at 8 kHz, each trial's 0.1 s gesture plus a ring-down of at most 0.25 s
+  // (docs/player.md) in blocks of 64 samples, every sample finite and within full scale, and the
+  // rubbing felt in it, not silence.
   const std::string wav = read_text(root_ / "out.wav");
-  ASSERT_GT(wav.size(), 44u);
-  EXPECT_EQ(wav.substr(0, 4), "RIFF");
-  EXPECT_GT(wav.size(), 40u * 0.1 * 8000 * 4);  // 40 gestures of 0.1 s at 8 kHz, float32
+  ASSERT_GE(wav.size(), 12u);
+  ASSERT_EQ(wav.substr(0, 4), "RIFF");
+  ASSERT_EQ(wav.substr(8, 4), "WAVE");
+  EXPECT_EQ(le32(wav, 4), wav.size() - 8);
+  std::map<std::string, std::string> chunks;
+  for (std::size_t at = 12; at + 8 <= wav.size();) {
+    const std::size_t size = le32(wav, at + 4);
+    ASSERT_LE(at + 8 + size, wav.size()) << "chunk '" << wav.substr(at, 4) << "' runs past the end";
+    chunks[wav.substr(at, 4)] = wav.substr(at + 8, size);
+    at += 8 + size + (size & 1);
+  }
+  ASSERT_TRUE(chunks.count("fmt ") && chunks.count("data"));
+  const std::string& fmt = chunks["fmt "];
+  ASSERT_GE(fmt.size(), 16u);
+  EXPECT_EQ(le16(fmt, 0), 3u);      // WAVE_FORMAT_IEEE_FLOAT
+  EXPECT_EQ(le16(fmt, 2), 1u);      // mono
+  EXPECT_EQ(le32(fmt, 4), 8000u);   // samples per second
+  EXPECT_EQ(le16(fmt, 14), 32u);    // bits per sample
+  const std::string& data = chunks["data"];
+  ASSERT_EQ(data.size() % 4, 0u);
+  const std::size_t frames = data.size() / 4;
+  if (chunks.count("fact")) {
+    EXPECT_EQ(le32(chunks["fact"], 0), frames);
+  }
+  EXPECT_GE(frames, 40u * 800u);                   // 40 gestures of 0.1 s
+  EXPECT_LE(frames, 40u * (800u + 2000u + 64u));   // each with at most 0.25 s of ring-down, block-rounded
+  double sum_squares = 0.0;
+  std::size_t nonzero = 0;
+  for (std::size_t n = 0; n < frames; ++n) {
+    const std::uint32_t bits = le32(data, 4 * n);
+    float v = 0.0f;
+    std::memcpy(&v, &bits, sizeof v);
+    ASSERT_TRUE(std::isfinite(v) && std::abs(v) <= 1.0f) << "sample " << n << ": " << v;
+    sum_squares += static_cast<double>(v) * v;
+    nonzero += v != 0.0f;
+  }
+  EXPECT_GT(std::sqrt(sum_squares / static_cast<double>(frames)), 0.01) << "the rubbing is not in the output";
+  EXPECT_GT(nonzero, frames / 10) << "the rubbing is not in the output";
 }
 
 TEST_F(PlayerStudy, AFinishedParticipantIsRefusedAndRestartKeepsTheOldFileAside) {

@@ -3,13 +3,16 @@
 // participant, and keep the old file aside on --restart without ever overwriting an aside file.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <ctime>
 #include <filesystem>
 #include <string>
 
+#include "storage/limits.hpp"
 #include "storage/study/trial_log.hpp"
 #include "storage/study/trial_table.hpp"
 #include "tests/storage/storage_test_support.hpp"
@@ -116,23 +119,28 @@ TEST(TrialLog, ResumesAtTheNextTrial) {
 
 // A writer killed at a random moment (SIGKILL while it appends and syncs as fast as it can, so
 // mostly inside write() or fsync()), then a new writer that continues: trials 1..n exactly once,
-// in order, with every trial the killed writer had synced.
+// in order, with every trial the killed writer had synced. The writer stops 3 rows short of the
+// study's end and waits there, so however late the kill lands (a test process descheduled for
+// seconds), the log it leaves is unfinished and takes the 3 rows appended after it.
 TEST(TrialLog, KilledWriterResumesWithoutLosingOrRepeatingATrial) {
   test::TempDir dir("log_kill");
-  constexpr std::size_t kTotal = 10000;  // more than the writer can append before the kill lands
+  constexpr std::size_t kTotal = kMaxStudyTrials;
   for (const std::size_t kill_after : {1u, 37u, 120u}) {
     SCOPED_TRACE("killed after " + std::to_string(kill_after) + " rows");
     fs::remove(dir / "P01.trials.csv");
     int pipe_fds[2];
     ASSERT_EQ(::pipe(pipe_fds), 0);
+    const pid_t parent = ::getpid();
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlives a test that stopped before the kill
+      if (::getppid() != parent) ::_exit(6);
       ::close(pipe_fds[0]);
       auto v = open_log(dir.path(), kTotal);
       if (!std::holds_alternative<TrialLog>(v)) ::_exit(3);
       TrialLog& log = std::get<TrialLog>(v);
-      for (int k = 1; k <= static_cast<int>(kTotal); ++k) {
+      for (int k = 1; k <= static_cast<int>(kTotal) - 3; ++k) {
         if (log.append(to_cells(trial("P01", k)))) ::_exit(4);
         const char done = 'r';
         if (::write(pipe_fds[1], &done, 1) != 1) ::_exit(5);  // one byte per row on disk
@@ -157,7 +165,7 @@ TEST(TrialLog, KilledWriterResumesWithoutLosingOrRepeatingATrial) {
     TrialLog log = opened(open_log(dir.path(), kTotal));
     EXPECT_GE(log.completed(), kill_after);  // nothing synced is lost
     EXPECT_TRUE(log.warnings().empty()) << messages(log.warnings());
-    EXPECT_LT(log.completed(), kTotal);
+    EXPECT_LE(log.completed(), kTotal - 3);
     const std::size_t resumed = log.completed();
     for (std::size_t k = resumed + 1; k <= resumed + 3; ++k) {
       ASSERT_EQ(log.append(to_cells(trial("P01", static_cast<int>(k)))), std::nullopt);
@@ -255,9 +263,13 @@ TEST(TrialLog, FinishedParticipantIsRefusedUnlessRestarted) {
                             "P01.trials.<UTC time>.csv and starts again\n");
   EXPECT_EQ(test::read_text_file(file), finished);
 
-  // Aside names this second and the next are taken already: they must survive untouched.
+  // The aside name of every second from now to 5 minutes on is taken already: whichever second
+  // the restart below falls in (the test may be descheduled for a while), its name is taken, and
+  // the planted files must survive untouched.
+  constexpr std::time_t kPlantedS = 300;
+  const std::time_t start = std::time(nullptr);
   std::vector<fs::path> planted;
-  for (const std::time_t t : {std::time(nullptr), std::time(nullptr) + 1}) {
+  for (std::time_t t = start; t <= start + kPlantedS; ++t) {
     std::tm tm{};
     ::gmtime_r(&t, &tm);
     char stamp[32];
@@ -266,6 +278,7 @@ TEST(TrialLog, FinishedParticipantIsRefusedUnlessRestarted) {
     test::write_text_file(planted.back(), "planted " + std::string(stamp));
   }
   TrialLog log = opened(open_log(dir.path(), 2, true));
+  ASSERT_LE(std::time(nullptr), start + kPlantedS) << "the restart took longer than the planted names cover";
   EXPECT_EQ(log.completed(), 0u);
   EXPECT_EQ(test::read_text_file(file), kHeader);
   for (const auto& p : planted) EXPECT_EQ(test::read_text_file(p), "planted " + p.stem().extension().string().substr(1));
@@ -276,7 +289,11 @@ TEST(TrialLog, FinishedParticipantIsRefusedUnlessRestarted) {
   }
   ASSERT_EQ(aside.size(), 1u);
   EXPECT_EQ(test::read_text_file(aside[0]), finished);
-  EXPECT_TRUE(aside[0].filename().string().ends_with(".2.csv")) << aside[0];
+  // The name of a planted second with ".2" before ".csv".
+  const std::string name = aside[0].filename().string();
+  ASSERT_TRUE(name.ends_with(".2.csv")) << aside[0];
+  const fs::path taken = dir / (name.substr(0, name.size() - 6) + ".csv");
+  EXPECT_NE(std::find(planted.begin(), planted.end(), taken), planted.end()) << aside[0];
   EXPECT_EQ(messages(log.warnings()), file.string() + ": warning: --restart: the earlier trials are kept aside in " + aside[0].string() + "\n");
 }
 

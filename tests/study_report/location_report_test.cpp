@@ -87,6 +87,22 @@ TEST(Chance, KnownValues) {
   EXPECT_NEAR(expected_uniform_distance_mm(study_workspace(), 0.0, 0.0), 53.8955, 1e-4);
 }
 
+// Far outside (report_chance.hpp): beyond 10^4 workspace diagonals the expectation is the distance
+// to the centre, which it approaches to within 1e-8 relative; an expansion of the integral for a
+// point at distance D along x from the centre of the 160 x 120 mm box gives D + 600 / D mm (the
+// mean of z^2 / 2D; z uniform over 120 mm), and in general D + (variance across the direction) / 2D. Either side of the switch (10^4 diagonals = 2e6 mm) and
+// far beyond, where the closed form's cubes would overflow.
+TEST(Chance, FarTargetsGiveTheDistanceToTheCentre) {
+  const Workspace w = study_workspace();
+  for (const double d : {1e5, 1.9e6, 2.1e6, 1e9, 1e120}) {
+    const double expected = d + 600.0 / d;
+    EXPECT_NEAR(expected_uniform_distance_mm(w, d, 0.0), expected, 1e-8 * expected) << d;
+    // Along (-0.6, 0.8): the variance across that direction is 0.64 * 160^2/12 + 0.36 * 120^2/12.
+    const double across = (0.64 * 160.0 * 160.0 / 12.0 + 0.36 * 120.0 * 120.0 / 12.0) / 2.0;
+    EXPECT_NEAR(expected_uniform_distance_mm(w, -0.6 * d, 0.8 * d), d + across / d, 1e-8 * d) << d;
+  }
+}
+
 LocationTrial trial(const std::string& participant, int number, LocationMetaphor m, double tx, double tz, double error) {
   LocationTrial t;
   t.participant = participant;
@@ -112,17 +128,22 @@ TEST(LocationReport, PerMetaphorChanceAndWelch) {
   EXPECT_DOUBLE_EQ(*r.metaphors[0].sd_mm, 10.0);
   EXPECT_DOUBLE_EQ(r.metaphors[1].mean_mm, 4.0);
   EXPECT_DOUBLE_EQ(*r.metaphors[1].sd_mm, 2.0);
-  const auto ci = t_interval_of_mean(20.0, 10.0, 3, 0.99);
-  EXPECT_DOUBLE_EQ(r.metaphors[0].ci99_mm->lower, ci->lower);
+  // SciPy 1.10.1: t.interval(0.99, 2, loc=20, scale=10/sqrt(3)).
+  ASSERT_TRUE(r.metaphors[0].ci99_mm);
+  EXPECT_NEAR(r.metaphors[0].ci99_mm->lower, -37.301108937148754, 1e-9);
+  EXPECT_NEAR(r.metaphors[0].ci99_mm->upper, 77.30110893714875, 1e-9);
+  // Chance from the quadrature above, not from the closed form the report uses.
   const Workspace w = study_workspace();
-  const double centre = expected_uniform_distance_mm(w, 0, 0), off = expected_uniform_distance_mm(w, 30, -20);
-  EXPECT_NEAR(r.metaphors[0].chance_mm, (2 * centre + off) / 3, 1e-12);
-  EXPECT_NEAR(r.metaphors[1].chance_mm, centre, 1e-12);
-  EXPECT_NEAR(r.chance_mm, (5 * centre + off) / 6, 1e-12);
+  const double centre = quadrature_mm(w, 0, 0), off = quadrature_mm(w, 30, -20);
+  EXPECT_NEAR(r.metaphors[0].chance_mm, (2 * centre + off) / 3, 1e-3);
+  EXPECT_NEAR(r.metaphors[1].chance_mm, centre, 1e-3);
+  EXPECT_NEAR(r.chance_mm, (5 * centre + off) / 6, 1e-3);
   ASSERT_EQ(r.metaphor_comparisons.size(), 1u);
   // Hand-worked: t = 16 / sqrt(100/3 + 4/3) = 2.7136, df = (104/3)^2 / ((100/3)^2/2 + (4/3)^2/2) = 2.1598.
   EXPECT_NEAR(r.metaphor_comparisons[0].welch->t, 16.0 / std::sqrt(104.0 / 3.0), 1e-12);
   EXPECT_NEAR(r.metaphor_comparisons[0].welch->df, (104.0 / 3) * (104.0 / 3) / ((10000.0 / 9 + 16.0 / 9) / 2), 1e-12);
+  // SciPy 1.10.1: ttest_ind([10, 20, 30], [2, 4, 6], equal_var=False).pvalue.
+  EXPECT_NEAR(r.metaphor_comparisons[0].welch->p, 0.10401031212071261, 1e-9);
   ASSERT_EQ(r.participants.size(), 2u);
   EXPECT_EQ(r.participants[0].participant, "a");
   EXPECT_DOUBLE_EQ(r.participants[0].metaphors[0].mean_mm, 15.0);

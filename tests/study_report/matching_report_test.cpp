@@ -9,6 +9,7 @@
 
 #include "study/report_matching.hpp"
 #include "study/report_predicted.hpp"
+#include "study/report_tables.hpp"
 
 namespace vimg::study {
 namespace {
@@ -80,10 +81,13 @@ TEST(MatchingReport, ReproducesThePapersTables) {
   EXPECT_EQ(b.correct, 394u);
   EXPECT_DOUBLE_EQ(b.accuracy, 0.985);
   EXPECT_DOUBLE_EQ(a.chance, 0.25);
-  ASSERT_TRUE(a.accuracy_ci95);
-  EXPECT_DOUBLE_EQ(a.accuracy_ci95->lower, wilson_interval(398, 400)->lower);
-  EXPECT_LT(a.accuracy_ci95->lower, 0.995);
-  EXPECT_GT(a.accuracy_ci95->upper, 0.995);
+  // The 95 % Wilson intervals of 398/400 and 394/400, from SciPy 1.10.1's
+  // binomtest(k, n).proportion_ci(0.95, method="wilson").
+  ASSERT_TRUE(a.accuracy_ci95 && b.accuracy_ci95);
+  EXPECT_NEAR(a.accuracy_ci95->lower, 0.9819550815637569, 1e-12);
+  EXPECT_NEAR(a.accuracy_ci95->upper, 0.9986277470452897, 1e-12);
+  EXPECT_NEAR(b.accuracy_ci95->lower, 0.9676653664151732, 1e-12);
+  EXPECT_NEAR(b.accuracy_ci95->upper, 0.9931077080805591, 1e-12);
 }
 
 TEST(MatchingReport, PerParticipantAccuracyAndWelchBetweenSets) {
@@ -153,10 +157,8 @@ TEST(MatchingReport, PredictionRestrictedToTheSetAndCorrelated) {
   EXPECT_DOUBLE_EQ(*c.measured[1][3], 0.03);
   EXPECT_EQ(c.off_diagonal_cells, 12u);
   // Off-diagonal: predicted 0.1 and 1/9 where 0.03 was measured (s2<->s4), 0 elsewhere.
-  std::vector<double> x(12, 0.0), y(12, 0.0);
-  x[0] = 0.1, y[0] = 0.03, x[1] = 0.1 / 0.9, y[1] = 0.03;
-  EXPECT_NEAR(*c.correlation, *pearson_correlation(x, y), 1e-12);
-  EXPECT_GT(*c.correlation, 0.9);
+  // SciPy 1.10.1's pearsonr([0.1, 0.1/0.9, 0 x 10], [0.03, 0.03, 0 x 10]).
+  EXPECT_NEAR(*c.correlation, 0.9983420823082456, 1e-12);
   // The complexity set got the same prediction too (it names s1..s4 as well).
   EXPECT_TRUE(r.sets[0].predicted);
   // A prediction that names no set's images is reported.
@@ -164,6 +166,41 @@ TEST(MatchingReport, PredictionRestrictedToTheSetAndCorrelated) {
   unrelated.stems = {"q", "r", "s", "t", "u"};
   MatchingReport again = make_matching_report(paper_trials());
   EXPECT_EQ(attach_predictions(again, {unrelated}).size(), 1u);
+}
+
+// docs/studies.md: the correlation "is not defined when either side is the same in every such
+// cell (for instance when nobody confused anything), and the report says so".
+TEST(MatchingReport, CorrelationIsUndefinedWhenNothingWasConfusedAndTheReportSaysSo) {
+  std::vector<MatchingTrial> trials;
+  for (const std::string image : {"a", "b", "c"}) {
+    MatchingTrial t;
+    t.participant = "p01";
+    t.set = "only";
+    t.trial = static_cast<int>(trials.size()) + 1;
+    t.presented = t.chosen = image;
+    t.correct = true;
+    trials.push_back(t);
+  }
+  PredictedConfusion p;
+  p.source = "compare.json";
+  p.stems = {"a", "b", "c"};
+  p.matrix = {{0.8, 0.1, 0.1}, {0.2, 0.7, 0.1}, {0.0, 0.3, 0.7}};
+  MatchingReport r = make_matching_report(trials);
+  EXPECT_TRUE(attach_predictions(r, {p}).empty());
+  ASSERT_TRUE(r.sets[0].predicted);
+  const PredictedComparison& c = *r.sets[0].predicted;
+  EXPECT_EQ(c.off_diagonal_cells, 6u);
+  EXPECT_FALSE(c.correlation) << "every measured off-diagonal cell is 0";
+  EXPECT_EQ(predicted_summary_text(c),
+            "Prediction from compare.json. Pearson correlation of predicted and measured confusion over the 6 off-diagonal "
+            "cells: r is not defined (one side is the same in every cell, e.g. no confusion was measured).");
+  // The same with one confusion measured: defined, and 'r = ' with three decimals.
+  trials[1].chosen = "c";
+  trials[1].correct = false;
+  MatchingReport confused = make_matching_report(trials);
+  EXPECT_TRUE(attach_predictions(confused, {p}).empty());
+  ASSERT_TRUE(confused.sets[0].predicted && confused.sets[0].predicted->correlation);
+  EXPECT_NE(predicted_summary_text(*confused.sets[0].predicted).find("cells: r = "), std::string::npos);
 }
 
 }  // namespace

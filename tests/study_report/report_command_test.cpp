@@ -97,8 +97,9 @@ TEST_F(ReportCommand, MatchingJsonHasTheKeysAndTheHandWorkedCounts) {
   EXPECT_EQ(total, a["trials"].number());
   EXPECT_EQ(a["accuracy"].number(), 0.75);
   EXPECT_EQ(a["correct"].number() / a["trials"].number(), a["accuracy"].number());
-  EXPECT_LT(a["accuracy_ci95"].array()[0].number(), 0.75);
-  EXPECT_GT(a["accuracy_ci95"].array()[1].number(), 0.75);
+  // SciPy 1.10.1: binomtest(6, 8).proportion_ci(0.95, method="wilson").
+  EXPECT_NEAR(a["accuracy_ci95"].array()[0].number(), 0.40927543031016883, 1e-12);
+  EXPECT_NEAR(a["accuracy_ci95"].array()[1].number(), 0.9285207872478909, 1e-12);
   EXPECT_EQ(a["chance"].number(), 0.25);
   const Json& dot = a["per_image"].array()[0];
   EXPECT_EQ(dot["image"].string(), "dot");
@@ -132,10 +133,17 @@ TEST_F(ReportCommand, LocationJsonHasTheKeys) {
   EXPECT_EQ(m[0]["n"].number(), 2);
   EXPECT_EQ(m[0]["mean_mm"].number(), 11.0);
   EXPECT_NEAR(m[0]["sd_mm"].number(), std::sqrt(72.0), 1e-12);
-  EXPECT_LT(m[0]["ci99_mm"].array()[0].number(), 11.0);
+  // SciPy 1.10.1: t.interval(0.99, 1, loc=11, scale=sqrt(72)/sqrt(2)).
+  EXPECT_NEAR(m[0]["ci99_mm"].array()[0].number(), -370.9404469772439, 1e-9);
+  EXPECT_NEAR(m[0]["ci99_mm"].array()[1].number(), 392.9404469772439, 1e-9);
   EXPECT_EQ(m[1]["mean_mm"].number(), 4.0);
-  EXPECT_GT(j["chance_mm"].number(), 53.0);
-  EXPECT_TRUE(j["ttest"].has("t") && j["ttest"].has("df") && j["ttest"].has("p"));
+  // The mean distance from the targets (0, 0) and (30, -20) to a point uniform in the 160 x 120 mm
+  // box, by SciPy's dblquad: 53.8955420 and 61.7194036 mm.
+  EXPECT_NEAR(j["chance_mm"].number(), (53.895542041632076 + 61.719403632715014) / 2.0, 1e-6);
+  // SciPy 1.10.1: ttest_ind([5, 17], [3, 5], equal_var=False); df = 37^2 / (36^2 + 1) (Welch-Satterthwaite).
+  EXPECT_NEAR(j["ttest"]["t"].number(), 1.150792911137501, 1e-12);
+  EXPECT_NEAR(j["ttest"]["df"].number(), 1369.0 / 1297.0, 1e-12);
+  EXPECT_NEAR(j["ttest"]["p"].number(), 0.44754373592012026, 1e-9);
   EXPECT_EQ(j["participants"].array().size(), 1u);
 }
 

@@ -56,8 +56,41 @@ TEST_F(EventStream, StopEndsTheOpenStreams) {
   RawConnection page(port());
   open_events(page);
   server.stop();
-  page.read_to_end();  // returns only because the server ended the stream
+  // The server closes the stream (an orderly end, not the hang bound), after the greeting only.
+  ASSERT_TRUE(page.read_to_end()) << "the stream was not closed: " << page.received();
+  EXPECT_EQ(page.received().find("event: "), std::string::npos) << page.received();
   EXPECT_EQ(server.open_event_streams(), 0);
+}
+
+// The check above rests on read_to_end telling an orderly end of the stream from a wait that
+// only stopped at its bound: against a peer that keeps the connection open it is false, against
+// one that closes it is true.
+TEST(RawConnectionTest, ReadToEndIsTrueOnlyWhenThePeerCloses) {
+  const int listener = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  ASSERT_GE(listener, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  socklen_t length = sizeof address;
+  ASSERT_EQ(::bind(listener, reinterpret_cast<const sockaddr*>(&address), sizeof address), 0);
+  ASSERT_EQ(::listen(listener, 2), 0);
+  ASSERT_EQ(::getsockname(listener, reinterpret_cast<sockaddr*>(&address), &length), 0);
+  const int port = ntohs(address.sin_port);
+  RawConnection open_one(port);
+  const int kept = ::accept(listener, nullptr, nullptr);
+  ASSERT_GE(kept, 0);
+  ASSERT_EQ(::send(kept, "x", 1, MSG_NOSIGNAL), 1);
+  EXPECT_FALSE(open_one.read_to_end(std::chrono::milliseconds(200))) << "the peer never closed";
+  EXPECT_EQ(open_one.received(), "x");
+  RawConnection closed_one(port);
+  const int closing = ::accept(listener, nullptr, nullptr);
+  ASSERT_GE(closing, 0);
+  ASSERT_EQ(::send(closing, "y", 1, MSG_NOSIGNAL), 1);
+  ::close(closing);
+  EXPECT_TRUE(closed_one.read_to_end());
+  EXPECT_EQ(closed_one.received(), "y");
+  ::close(kept);
+  ::close(listener);
 }
 
 TEST_F(EventStream, AtMostKMaxEventStreamsAreOpen) {

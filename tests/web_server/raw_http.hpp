@@ -73,9 +73,12 @@ class RawConnection {
     for (std::size_t at = received_.find(text); at != std::string::npos; at = received_.find(text, at + text.size())) ++n;
     return n;
   }
-  void read_to_end() {
-    const auto give_up = std::chrono::steady_clock::now() + kHangBound;
+  // Reads until the peer closes the connection: true then; false when the bound or an error ended
+  // the wait instead (a server that never closes).
+  bool read_to_end(std::chrono::milliseconds bound = kHangBound) {
+    const auto give_up = std::chrono::steady_clock::now() + bound;
     while (read_some(give_up)) {}
+    return closed_by_peer_;
   }
   const std::string& received() const { return received_; }
 
@@ -90,6 +93,7 @@ class RawConnection {
     do {
       n = ::recv(fd_, buffer, sizeof buffer, 0);
     } while (n < 0 && errno == EINTR);
+    if (n == 0) closed_by_peer_ = true;
     if (n <= 0) return false;
     received_.append(buffer, static_cast<std::size_t>(n));
     return true;
@@ -97,6 +101,7 @@ class RawConnection {
 
   int fd_ = -1;
   bool connected_ = false;
+  bool closed_by_peer_ = false;  // recv() returned 0: the orderly end of the stream
   std::string received_;
 };
 
