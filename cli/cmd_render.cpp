@@ -34,7 +34,7 @@ struct RenderArgs {
   std::string image;
   std::string gesture;
   std::string out;
-  int rate_hz = 8000;
+  int rate_hz = static_cast<int>(kDefaultRenderRateHz);
   // Options of the hardware layer (actuator profile) go in the block marked below.
   std::string actuator;        // profile file; empty: the ideal actuator
   std::string register_trace;  // DRV2605L register traffic CSV; needs a drv2605l profile
@@ -177,7 +177,7 @@ void add_render_command(CLI::App& vimg, int& exit_code) {
   sub->add_option("IMAGE", a->image, "a .vimg or .png image")->required();
   sub->add_option("--gesture", a->gesture, "the gesture CSV (time_s,finger,x_mm,y_mm,pressure,phase)")->required();
   sub->add_option("--out", a->out, "OUT.wav (mono 32-bit float), OUT.csv (time_s,drive or time_s,acceleration), or a phone clip OUT.ahap (Apple) or OUT.haptic (Meta), written atomically")->required();
-  sub->add_option("--rate", a->rate_hz, "output sample rate in Hz")->check(CLI::Range(1, 48000));
+  sub->add_option("--rate", a->rate_hz, "output sample rate in Hz")->check(CLI::Range(static_cast<int>(kMinRenderRateHz), static_cast<int>(kMaxRenderRateHz)));
   sub->add_option("--actuator", a->actuator, "actuator profile: a file, or a shipped profile's name (lra-175hz-drv2605l, erm-10mm, voice-coil-audio, ideal); default: ideal, 175 Hz carrier");
   sub->add_option("--register-trace", a->register_trace, "DRV2605L register traffic as CSV (needs a drv2605l --actuator)");
   sub->add_option("--signal", a->signal,

@@ -50,7 +50,7 @@ ParsedOptions parse_editor_options(int argc, char** argv) {
   app.add_option("--actuator", o.actuator,
                  "actuator profile to design for (a file, or a shipped profile's name such as lra-175hz-drv2605l): the scope shows its predicted acceleration "
                  "and the canvas marks primitives it barely renders; default: ideal");
-  app.add_option("--rate", o.sample_rate_hz, "output sample rate, Hz")->check(cmdline::finite_in(1.0, 48000.0));
+  app.add_option("--rate", o.sample_rate_hz, "output sample rate, Hz")->check(cmdline::finite_in(kMinRenderRateHz, kMaxRenderRateHz));
   touch_latency_ms = o.touch.panel_latency_s * 1e3;
   app.add_option("--touch-latency-ms", touch_latency_ms,
                  "the pointing device's latency in ms (decimals allowed): playing mode feels each finger this far "

@@ -15,7 +15,7 @@ struct EditorOptions {
   std::string record_gesture;       // record in playing mode and write the gesture here on stop
   std::string actuator;             // actuator profile to design for; empty: the ideal actuator
   OutputChoice output;
-  double sample_rate_hz = 8000.0;
+  double sample_rate_hz = kDefaultRenderRateHz;
   double autosave_interval_s = 5.0;
   double zoom = 1.0;                // 1 = physical size
   double px_per_mm = 0.0;           // 0: from the display's DPI

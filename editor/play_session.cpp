@@ -7,7 +7,7 @@
 
 namespace vimg::editor {
 namespace {
-constexpr int kMaxFingers = 10;
+constexpr int kMaxFingers = kMaxLiveFingers;
 constexpr std::size_t kMaxTrail = 4096;
 }  // namespace
 

@@ -24,6 +24,7 @@
 #include <span>
 
 #include "player/finger_step.hpp"
+#include "player/render_defaults.hpp"
 #include "player/touch_event.hpp"
 #include "primitives/touch_prediction/finger_predictor.hpp"
 
@@ -38,7 +39,7 @@ struct LiveTrackerOptions {
 
 class LiveTracker {
  public:
-  static constexpr int kMaxFingers = 10;
+  static constexpr int kMaxFingers = kMaxLiveFingers;
 
   explicit LiveTracker(const LiveTrackerOptions& options = {}) : options_(options) {}
 

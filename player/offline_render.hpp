@@ -7,13 +7,14 @@
 
 #include "player/drive_sink.hpp"
 #include "player/gesture.hpp"
+#include "player/render_defaults.hpp"
 #include "player/scene.hpp"
 #include "player/simulated_panel.hpp"
 
 namespace vimg {
 
 struct OfflineRenderOptions {
-  double sample_rate_hz = 8000.0;  // 1 .. 48000
+  double sample_rate_hz = kDefaultRenderRateHz;  // kMinRenderRateHz .. kMaxRenderRateHz
   std::size_t block_samples = 64;
   std::size_t max_contacts = 512;
   // After the gesture ends, rendering goes on until every ring-down has finished, at most this long.

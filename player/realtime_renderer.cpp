@@ -18,7 +18,7 @@ namespace {
 constexpr std::size_t kRetiredCapacity = 16;
 constexpr double kRateWindow_s = 0.5;
 
-bool valid_rate(double rate_hz) { return rate_hz >= 1.0 && rate_hz <= 48000.0; }
+bool valid_rate(double rate_hz) { return valid_render_rate(rate_hz); }
 
 std::size_t choose_block_samples(const RealtimeOptions& o, std::size_t sink_min) {
   if (!valid_rate(o.sample_rate_hz)) return std::max<std::size_t>(1, sink_min);

@@ -41,6 +41,7 @@
 
 #include "player/drive_sink.hpp"
 #include "player/live_tracker.hpp"
+#include "player/render_defaults.hpp"
 #include "player/scene.hpp"
 #include "player/touch_event.hpp"
 #include "primitives/touch_prediction/touch_latency_defaults.hpp"
@@ -59,7 +60,7 @@ struct TouchCompensation {
 };
 
 struct RealtimeOptions {
-  double sample_rate_hz = 8000.0;  // 1 .. 48000
+  double sample_rate_hz = kDefaultRenderRateHz;  // kMinRenderRateHz .. kMaxRenderRateHz
   // Samples per block; 0: 1 ms worth (8 at 8 kHz), at least 1. Raised to the sink's
   // min_block_samples(); otherwise at most 1/50 s.
   std::size_t block_samples = 0;

@@ -39,7 +39,7 @@ ArgsResult parse_player_args(const std::vector<std::string>& arguments) {
                "intensity across its band (as vimg render --equalize); nothing changes without it");
   auto* scale = app.add_option("--px-per-mm", px_per_mm, "screen scale; default: from the display's DPI")
                     ->check(cmdline::finite_in(0.01, 1000.0));
-  app.add_option("--rate", a.rate_hz, "render rate, Hz")->check(cmdline::finite_in(1.0, 48000.0));
+  app.add_option("--rate", a.rate_hz, "render rate, Hz")->check(cmdline::finite_in(kMinRenderRateHz, kMaxRenderRateHz));
   app.add_option("--window", window, "a window of WIDTHxHEIGHT pixels instead of full screen")
       ->check(CLI::Validator(
           [](std::string& v) -> std::string {

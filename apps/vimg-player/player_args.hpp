@@ -15,7 +15,7 @@ struct PlayerArgs {
   std::string output = "audio";
   std::optional<std::string> actuator_path;
   std::optional<double> px_per_mm;
-  double rate_hz = 8000.0;
+  double rate_hz = kDefaultRenderRateHz;
   std::optional<std::pair<int, int>> window_size;
   bool calibrate = false;
   bool equalize = false;       // equalize the drive for the actuator (ActuatorChain, --equalize)
