@@ -121,7 +121,9 @@ TEST(TrialLog, ResumesAtTheNextTrial) {
 // mostly inside write() or fsync()), then a new writer that continues: trials 1..n exactly once,
 // in order, with every trial the killed writer had synced. The writer stops 3 rows short of the
 // study's end and waits there, so however late the kill lands (a test process descheduled for
-// seconds), the log it leaves is unfinished and takes the 3 rows appended after it.
+// seconds), the log it leaves is unfinished and takes the 3 rows appended after it. (Running to
+// the end, a writer on tmpfs, where fsync costs nothing, finished all its trials during a 5 s
+// stall before the kill, and the resumed log, refused as finished, aborted the binary.)
 TEST(TrialLog, KilledWriterResumesWithoutLosingOrRepeatingATrial) {
   test::TempDir dir("log_kill");
   constexpr std::size_t kTotal = kMaxStudyTrials;
