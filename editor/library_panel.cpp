@@ -61,6 +61,8 @@ std::optional<std::string> LibraryPanel::draw(bool playing) {
   ImGui::EndDisabled();
   layout_.print("compare_button", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
                 ImGui::GetItemRectSize().y);
+  // The selection, for scripts to wait on: a line each time the count changes.
+  layout_.print("compare_selection_" + std::to_string(selected_.size()), 0.0f, 0.0f, 0.0f, 0.0f);
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Which of the selected images will people confuse? (as vimg compare predicts it)");
   ImGui::BeginChild("##library", ImVec2(0, 0), true);

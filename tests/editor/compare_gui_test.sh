@@ -28,18 +28,27 @@ scroll_to() {
   done
   echo "FAIL: library entry $1 not reachable"; shot "no-$1"; exit 1
 }
-# pick NAME [ctrl]: clicks the library entry, with Ctrl held when asked.
+# selection_is N: the editor's last printed selection count is N.
+selection_is() {
+  [ "$(grep '^layout compare_selection_' "$art/$current.layout" | tail -1 | cut -d' ' -f2)" = "compare_selection_$1" ]
+}
+# pick NAME COUNT [ctrl]: clicks the library entry (with Ctrl held when asked), then waits until
+# the editor says that COUNT images are selected, at most 30 s.
 pick() {
   scroll_to "$1"
   local x y w h
   read -r _ _ x y w h <<<"$(grep "^layout library_lib/$1 " "$art/$current.layout" | tail -1)"
-  xdotool mousemove $((WX + x + w / 2)) $((WY + y + h / 2)); sleep 0.15
-  if [ "${2:-}" = ctrl ]; then
-    xdotool keydown ctrl; sleep 0.1; xdotool click 1; sleep 0.1; xdotool keyup ctrl
+  xdotool mousemove --sync $((WX + x + w / 2)) $((WY + y + h / 2))
+  if [ "${3:-}" = ctrl ]; then
+    xdotool keydown ctrl click 1 keyup ctrl
   else
     xdotool click 1
   fi
-  sleep 0.3
+  for _ in $(seq 3000); do
+    selection_is "$2" && return 0
+    sleep 0.01
+  done
+  echo "FAIL: $1 did not make the selection $2"; shot "no-selection-$1"; exit 1
 }
 # wait_result: until the window shows the matrix (or failed), at most 60 s.
 wait_result() {
@@ -52,12 +61,11 @@ wait_result() {
 
 current=compare
 start compare --library-dir "$art/lib" --output none --recovery-dir "$art/recovery"
-pick copy_a.vimg
-pick copy_b.vimg ctrl
-pick dot.vimg ctrl
+pick copy_a.vimg 1
+pick copy_b.vimg 2 ctrl
+pick dot.vimg 3 ctrl
 widget compare_button
 wait_result
-sleep 0.5
 shot confused
 grep -q '^layout compare_failed' "$art/compare.layout" && { echo "FAIL: the comparison failed"; cat "$art/compare.log"; exit 1; }
 grep -q '^layout compare_warning0 ' "$art/compare.layout" || { echo "FAIL: no warning for the two copies"; exit 1; }
@@ -67,12 +75,11 @@ quit_editor
 
 current=apart
 start apart --library-dir "$art/lib" --output none --recovery-dir "$art/recovery2"
-pick dot.vimg
-pick line.vimg ctrl
-pick surface.vimg ctrl
+pick dot.vimg 1
+pick line.vimg 2 ctrl
+pick surface.vimg 3 ctrl
 widget compare_button
 wait_result
-sleep 0.5
 shot apart
 grep -q '^layout compare_no_warning ' "$art/apart.layout" || { echo "FAIL: a DOT, a LINE and a SURFACE should give no warning"; exit 1; }
 if grep -q '^layout compare_warning' "$art/apart.layout"; then echo "FAIL: a warning for a DOT, a LINE and a SURFACE"; exit 1; fi
