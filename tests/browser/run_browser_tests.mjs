@@ -4,6 +4,9 @@
 //   picture          a screenshot of the page shows the picture the PNG export draws
 //   drag             silence at rest; a drag across a SURFACE sounds in the AudioWorklet and lights it
 //   renderGesture    window.vimg.renderGesture equals `vimg render --out F.csv` within 1e-5 of full scale
+//   prediction       touch-latency settings default from the wasm and persist across a reload; every
+//                    pointer sample reaches the renderer; a drag that stops 6 mm short of a SURFACE is
+//                    felt inside it with a 200 ms panel latency predicted, and not without prediction
 //   push             a save of the image reaches the open page within 1 s, the audio still running
 //   refuses          traversal, other methods than GET/HEAD and listings are refused
 // Waits are on states (a line printed, a value changed), each bounded only against a hang.
@@ -95,6 +98,62 @@ await check('renderGesture', async () => {
   }
   assert(worst <= 1e-5, `largest difference ${worst} of full scale (limit 1e-5)`);
   return `largest difference ${worst.toExponential(2)} of full scale`;
+});
+
+// Moves at 100 mm/s (1 mm per 10 ms of audio time) towards the SURFACE's nearest free side, stops
+// `short_mm` before its edge, waits 0.2 s of audio and lifts. Returns the worklet's peak meanwhile.
+async function approach(primitive, shortMm) {
+  const info = await page.evaluate(() => window.vimg.imageInfo());
+  const [x0, y0, x1, y1] = primitive.bbox_mm;
+  const sides = [
+    { room: x0, from: (d) => [x0 - d, (y0 + y1) / 2] },
+    { room: info.width_mm - x1, from: (d) => [x1 + d, (y0 + y1) / 2] },
+    { room: y0, from: (d) => [(x0 + x1) / 2, y0 - d] },
+    { room: info.height_mm - y1, from: (d) => [(x0 + x1) / 2, y1 + d] },
+  ].sort((a, b) => b.room - a.room);
+  const side = sides[0];
+  assert(side.room >= shortMm + 10, `no side of ${primitive.id} has ${shortMm + 10} mm of room`);
+  const at = (d) => page.evaluate((p) => window.vimg.clientPointOfMm(p[0], p[1]), side.from(d));
+  const start = await at(side.room - 1);
+  await page.mouse.move(start.x, start.y);
+  await page.evaluate(() => window.vimg.workletPeak());  // resets the peak
+  await page.mouse.down();
+  for (let d = side.room - 2; d >= shortMm; d -= 1) {
+    const p = await at(d);
+    await page.mouse.move(p.x, p.y);
+    await waitForAudioTime(page, 0.01);
+  }
+  await waitForAudioTime(page, 0.2);
+  const peak = await page.evaluate(() => window.vimg.workletPeak());
+  await page.mouse.up();
+  await waitForAudioTime(page, 0.2);
+  return peak;
+}
+
+await check('prediction', async () => {
+  const s = await page.evaluate(() => window.vimg.touchSettings());
+  // docs/latency.md: 25 ms for a touchscreen, 8 ms for a mouse or pen (the C++ constants).
+  assert(s.defaults.touch === 25 && s.defaults.mouse === 8, `defaults ${JSON.stringify(s.defaults)}`);
+  assert(s.latencyMs === s.defaults[s.kind] && s.prediction, `a new device starts at ${JSON.stringify(s)}`);
+  assert(!(await page.evaluate(() => window.vimg.setTouchLatencyMs(-1))), 'a negative latency was accepted');
+  await page.evaluate(() => { window.vimg.setTouchLatencyMs(400); window.vimg.setTouchPrediction(false); });
+  await page.reload({ waitUntil: 'load' });  // the page's script defines window.vimg before 'load'
+  await page.evaluate(() => window.vimg.ready);
+  const kept = await page.evaluate(() => window.vimg.touchSettings());
+  assert(kept.latencyMs === 400 && !kept.prediction, `after a reload: ${JSON.stringify(kept)}`);
+  await page.evaluate(() => window.vimg.startAudio());
+  await waitForAudioTime(page, 0.1);
+  const surface = (await page.evaluate(() => window.vimg.imageInfo())).primitives.find((p) => p.kind === 'surface');
+  const sentBefore = await page.evaluate(() => window.vimg.samplesSent);
+  const off = await approach(surface, 3);
+  const sent = (await page.evaluate(() => window.vimg.samplesSent)) - sentBefore;
+  await page.evaluate(() => window.vimg.setTouchPrediction(true));
+  const on = await approach(surface, 3);
+  await page.evaluate((d) => { window.vimg.setTouchLatencyMs(d); }, s.defaults[s.kind]);
+  assert(sent >= 10, `only ${sent} pointer samples reached the renderer`);
+  assert(off === 0, `without prediction, stopping 3 mm short of ${surface.id} sounded (peak ${off})`);
+  assert(on > 0.01, `with 400 ms predicted, stopping 3 mm short of ${surface.id} stayed silent (peak ${on})`);
+  return `defaults ${s.defaults.touch}/${s.defaults.mouse} ms, kept across a reload; ${sent} samples; 3 mm short: peak ${off} off, ${on.toFixed(3)} predicted`;
 });
 
 await check('push', async () => {

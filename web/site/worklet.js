@@ -1,10 +1,17 @@
 // The AudioWorklet: renders 128-frame blocks at the AudioContext's rate with the same wasm as the
 // page (vimg.wasm, instantiated here from the bytes the page posts: Emscripten's loader does not run
 // in a worklet). Pointer events are applied at the start of the next block (no buffering beyond the
-// browser's own block). Messages in: {type:'init', wasm, vsc}, {type:'vsc', bytes},
-// {type:'event', finger, phase, x, y, pressure, id}. Out: {type:'ready'}, {type:'scope', samples,
+// browser's own block), each stamped with its own age. Messages in: {type:'init', wasm, vsc}, {type:'vsc', bytes},
+// {type:'event', finger, phase, x, y, pressure, id, age}, {type:'prediction', horizonS}. An event's
+// `age` is how long before the page posted it the pointer sample happened (its timeStamp); it is
+// stamped that long before the block it reaches (at most kOldestEventS: the tracker drops events
+// older than 0.1 s), as the native players stamp an event when it arrives. The page's horizon adds
+// the output's latency (docs/latency.md). Without `age`, an event is stamped with its block.
+// Out: {type:'ready'}, {type:'scope', samples,
 // contacts, eventIds, peak}, {type:'error', text} (once, when rendering throws).
 'use strict';
+
+const kOldestEventS = 0.08;
 
 class VimgProcessor extends AudioWorkletProcessor {
   constructor() {
@@ -65,6 +72,8 @@ class VimgProcessor extends AudioWorkletProcessor {
       this.loadVsc(m.bytes);
     } else if (m.type === 'event') {
       this.pending.push(m);
+    } else if (m.type === 'prediction' && this.exports) {
+      this.exports.vimg_live_set_prediction(m.horizonS);
     }
   }
 
@@ -83,8 +92,10 @@ class VimgProcessor extends AudioWorkletProcessor {
     const out = outputs[0];
     if (!this.exports || out.length === 0) return true;
     const x = this.exports;
+    const now = x.vimg_live_time_s();
     for (const e of this.pending) {
-      x.vimg_live_event(x.vimg_live_time_s(), e.finger, e.phase, e.x, e.y, e.pressure);
+      const t = typeof e.age === 'number' && e.age > 0 ? now - Math.min(e.age, kOldestEventS) : now;
+      x.vimg_live_event(t, e.finger, e.phase, e.x, e.y, e.pressure);
       if (e.id !== undefined) this.eventIds.push(e.id);
     }
     this.pending.length = 0;

@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "primitives/touch_prediction/touch_latency_defaults.hpp"
 #include "web/wasm/picture_json.hpp"
 #include "web/wasm/web_renderer.hpp"
 
@@ -56,5 +57,13 @@ void vimg_live_event(double time_s, int finger, int phase, double x_mm, double y
 const float* vimg_live_render(int frames) { return renderer().live_render(static_cast<std::size_t>(frames)).data(); }
 double vimg_live_time_s() { return renderer().live_time_s(); }
 int vimg_live_contacts() { return static_cast<int>(renderer().live_contacts()); }
+
+// Touch-latency compensation (docs/latency.md): the live stream predicts each finger horizon_s
+// ahead (0: off); the page's defaults and bound are the C++ ones (touch_latency_defaults.hpp).
+void vimg_live_set_prediction(double horizon_s) { renderer().live_set_prediction(horizon_s); }
+double vimg_touch_latency_default_ms(int mouse_or_pen) {
+  return (mouse_or_pen != 0 ? vimg::kDefaultMousePanelLatency_s : vimg::kDefaultTouchPanelLatency_s) * 1e3;
+}
+double vimg_touch_latency_max_ms() { return vimg::kMaxTouchPanelLatency_s * 1e3; }
 
 }  // extern "C"

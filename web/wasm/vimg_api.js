@@ -62,6 +62,12 @@ var VimgRenderer = (function () {
     var m = this.module;
     m._vimg_live_event(m._vimg_live_time_s(), finger, phase, xMm, yMm, pressure);
   };
+  // Touch-latency compensation (docs/latency.md): the defaults and the bound come from the C++.
+  VimgRenderer.prototype.touchLatencyDefaultMs = function (pointerType) {
+    return this.module._vimg_touch_latency_default_ms(pointerType === 'touch' ? 0 : 1);
+  };
+  VimgRenderer.prototype.touchLatencyMaxMs = function () { return this.module._vimg_touch_latency_max_ms(); };
+  VimgRenderer.prototype.liveSetPrediction = function (horizonS) { this.module._vimg_live_set_prediction(horizonS); };
   VimgRenderer.prototype.liveRender = function (frames) {
     var at = this.module._vimg_live_render(frames) >> 2;
     return this.module.HEAPF32.subarray(at, at + frames);

@@ -78,6 +78,7 @@ void WebRenderer::live_start(double rate_hz) {
   live_time_s_ = 0.0;
   live_samples_ = 0;
   tracker_ = LiveTracker();
+  tracker_.set_prediction(live_horizon_s_);
   mixer_.set_scene(scene_.get());
 }
 

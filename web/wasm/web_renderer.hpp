@@ -35,6 +35,12 @@ class WebRenderer {
   // Live: start at rate_hz (time 0), take events on the stream's clock, render the next frames.
   void live_start(double rate_hz);
   void live_event(const TouchEvent& event) { tracker_.apply(event, live_time_s_); }
+  // Touch-latency compensation (docs/latency.md): each finger predicted horizon_s ahead of the
+  // sample's time (0: off). Kept across live_start().
+  void live_set_prediction(double horizon_s) {
+    live_horizon_s_ = horizon_s;
+    tracker_.set_prediction(horizon_s);
+  }
   const std::vector<float>& live_render(std::size_t frames);
   double live_time_s() const { return live_time_s_; }
   std::size_t live_contacts() const { return mixer_.active_contacts(); }
@@ -50,6 +56,7 @@ class WebRenderer {
   LiveTracker tracker_;
   double live_rate_hz_ = 48000.0;
   double live_time_s_ = 0.0;
+  double live_horizon_s_ = 0.0;
   std::uint64_t live_samples_ = 0;
   std::vector<float> live_block_;
   std::string error_;
