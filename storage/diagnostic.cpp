@@ -4,41 +4,11 @@
 #include <cstdint>
 #include <iterator>
 
+#include "storage/text_bytes.hpp"
+
 namespace vimg {
 
 namespace {
-
-// The length of the valid UTF-8 sequence starting at text[i] and its code point, or 0 when the
-// byte does not start one (stray continuation, overlong form, surrogate, beyond U+10FFFF, cut).
-std::size_t utf8_sequence(std::string_view text, std::size_t i, std::uint32_t& code_point) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-  const unsigned char b = byte(i);
-  std::size_t n = 0;
-  unsigned char low = 0x80, high = 0xBF;  // allowed range of the second byte
-  if (b >= 0xC2 && b <= 0xDF) {
-    n = 2;
-    code_point = b & 0x1Fu;
-  } else if (b >= 0xE0 && b <= 0xEF) {
-    n = 3;
-    code_point = b & 0x0Fu;
-    if (b == 0xE0) low = 0xA0;
-    if (b == 0xED) high = 0x9F;
-  } else if (b >= 0xF0 && b <= 0xF4) {
-    n = 4;
-    code_point = b & 0x07u;
-    if (b == 0xF0) low = 0x90;
-    if (b == 0xF4) high = 0x8F;
-  } else {
-    return 0;
-  }
-  if (i + n > text.size()) return 0;
-  for (std::size_t k = 1; k < n; ++k) {
-    const unsigned char c = byte(i + k);
-    if (k == 1 ? (c < low || c > high) : (c & 0xC0) != 0x80) return 0;
-    code_point = (code_point << 6) | (c & 0x3Fu);
-  }
-  return n;
-}
 
 bool hidden_control(std::uint32_t cp) {
   return (cp >= 0x80 && cp <= 0x9F) ||      // C1 controls (0x9B is a CSI)

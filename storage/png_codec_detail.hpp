@@ -46,10 +46,12 @@ bool decode_text(ReadState* state, ErrorSink* sink);
 // the bytes that follow it, so such lies are caught here, before any allocation.
 bool chunk_lengths_fit(std::string_view bytes, ErrorSink* sink);
 
-// The picture's size from IHDR (the first chunk) against kMaxPngSide and `max_pixels`: a limit,
-// not damage, named with the size (libpng would only say "Invalid IHDR data"). Nothing when within
-// them or when there is no IHDR first (libpng reports that). storage/png_image_data.cpp.
-std::optional<std::string> size_over_limits(std::string_view bytes, double max_pixels);
+// The picture's size from IHDR (the first chunk): a width or height of 0, which PNG forbids ("the
+// PNG header gives a width of 0; PNG requires a width and height of at least 1"), or a size over
+// kMaxPngSide or `max_pixels` (a limit, not damage, named with the size). libpng would only say
+// "Invalid IHDR data" for either. Nothing when the size is fine or when there is no IHDR first
+// (libpng reports that). storage/png_image_data.cpp.
+std::optional<std::string> size_problem(std::string_view bytes, double max_pixels);
 
 // The image data (IDAT) inflated no further than one byte past what the rows IHDR declares need,
 // so that data that inflates far beyond them (a small picture whose data inflates to gigabytes)

@@ -106,7 +106,7 @@ DecodedPng decode_png_rgba(std::string_view bytes, double max_pixels) {
     result.error = sink.message;
     return result;
   }
-  if (auto limit = png_detail::size_over_limits(bytes, max_pixels)) {
+  if (auto limit = png_detail::size_problem(bytes, max_pixels)) {
     result.error = *limit;
     return result;
   }

@@ -1,5 +1,5 @@
-// What the raw bytes of a PNG say before libpng decodes them: the picture's size against the
-// limits, and how far its image data inflates (docs/limits.md, "PNG").
+// What the raw bytes of a PNG say before libpng decodes them: the picture's size (zero, which PNG
+// forbids, or over the limits), and how far its image data inflates (docs/limits.md, "PNG").
 #include <zlib.h>
 
 #include <algorithm>
@@ -83,9 +83,14 @@ class RawInflater {
 
 }  // namespace
 
-std::optional<std::string> size_over_limits(std::string_view bytes, double max_pixels) {
+std::optional<std::string> size_problem(std::string_view bytes, double max_pixels) {
   if (bytes.size() < 24 || bytes.compare(12, 4, "IHDR") != 0) return std::nullopt;  // libpng reports it
   const std::uint32_t width = be32(bytes, 16), height = be32(bytes, 20);
+  // PNG specification, 11.2.2 IHDR: "Zero is an invalid value" for the width and the height.
+  if (width == 0 || height == 0) {
+    const std::string gives = width == 0 && height == 0 ? "a width and a height of 0" : width == 0 ? "a width of 0" : "a height of 0";
+    return "the PNG header gives " + gives + "; PNG requires a width and height of at least 1";
+  }
   const std::string size = "the picture is " + std::to_string(width) + " x " + std::to_string(height) + " pixels";
   if (width > static_cast<std::uint32_t>(kMaxPngSide) || height > static_cast<std::uint32_t>(kMaxPngSide)) {
     return size + ", over the limit of " + std::to_string(kMaxPngSide) + " pixels a side (limit " +

@@ -24,7 +24,7 @@ using png_detail::decode_text;
 using png_detail::ErrorSink;
 using png_detail::ReadState;
 using png_detail::image_data_over_rows;
-using png_detail::size_over_limits;
+using png_detail::size_problem;
 
 // A text chunk whose keyword is `vibroimage`.
 struct TextChunk {
@@ -171,7 +171,7 @@ PngText read_png_text(std::string_view bytes) {
     result.damaged = true;
     return result;
   }
-  if (auto limit = size_over_limits(bytes, kMaxDecodedPngPixels)) {
+  if (auto limit = size_problem(bytes, kMaxDecodedPngPixels)) {
     result.error = *limit;
     return result;
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <mutex>
@@ -73,6 +74,23 @@ std::optional<Diagnostic> canvas_mismatch(const std::vector<CompareInput>& input
 
 void fail(CompareResult& r, std::string message) {
   r.diagnostics.push_back({Diagnostic::Severity::error, "vimg compare", 0, std::move(message)});
+}
+
+// The similarity of every pair, and the ST-SIM of each direction as it enters it (bounded to [0, 1],
+// over the blocks either signal makes felt), from one perceptual_similarity per pair.
+void fill_similarity(const std::vector<PerceptualFeatures>& features, const SimilarityConstants& constants, CompareResult& r) {
+  const std::size_t n = features.size();
+  const auto bounded = [](double v) { return std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 1.0); };
+  r.similarity.assign(n, std::vector<double>(n, 1.0));
+  r.stsim.assign(n, std::vector<double>(n, 1.0));
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const PerceptualSimilarity s = perceptual_similarity(features[i], features[j], constants);
+      r.similarity[i][j] = r.similarity[j][i] = s.value;
+      r.stsim[i][j] = bounded(s.stsim_ab);
+      r.stsim[j][i] = bounded(s.stsim_ba);
+    }
+  }
 }
 
 }  // namespace
@@ -174,8 +192,8 @@ CompareResult run_compare(const CompareRequest& request) {
     return r;
   }
 
-  r.stsim = stsim_matrix(features);
-  r.similarity = similarity_matrix(features, request.similarity);
+  r.stsim_plain = stsim_matrix(features);
+  fill_similarity(features, request.similarity, r);
   r.predicted_confusion = predicted_confusion(r.similarity, request.choice);
   r.likely_confused = likely_confused_pairs(r.predicted_confusion, request.choice);
   for (const ConfusedPair& pair : r.likely_confused)

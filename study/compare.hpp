@@ -72,7 +72,13 @@ struct CompareResult {
   LevelCalibration calibration;
   SimilarityConstants similarity_constants;
   ChoiceModel choice;
-  PerceptionMatrix stsim;                // stsim[i][j]: input i against reference j; NaN: no value
+  // stsim[i][j]: ST-SIM of input i against reference j as the similarity takes it (docs/perception.md,
+  // "Perceptual similarity"): over the blocks where either is felt, bounded to [0, 1]; 1 is the same
+  // waveform, 0 nothing in common. The structure S of the pair is min(stsim[i][j], stsim[j][i]).
+  PerceptionMatrix stsim;
+  // The plain metric over the whole common length (stsim_matrix), unbounded: against a reference
+  // that is only a decayed ring where the other is felt it runs to 1e4 .. 1e6. NaN: no value.
+  PerceptionMatrix stsim_plain;
   PerceptionMatrix similarity;           // symmetric perceptual similarity
   PerceptionMatrix predicted_confusion;  // rows presented, columns chosen, each row sums to 1
   std::vector<ConfusedPair> likely_confused;

@@ -48,7 +48,11 @@ HeatMap heat_map(const CompareResult& r, const PerceptionMatrix& m, std::string 
 }
 
 std::string stsim_table(const CompareResult& r) {
-  std::string s = "<table>\n<tr><th class=\"name\">ST-SIM of \u2193 against reference \u2192</th>";
+  std::string s =
+      "<p class=\"note\">How alike the waveforms are, block by block: 1 the same waveform, 0 nothing in common. "
+      "ST-SIM of the image \u2193 against the reference \u2192 over the stretches where either is felt, bounded to "
+      "[0, 1] as the similarity takes it: the pair's structure is the smaller of its two directions.</p>\n";
+  s += "<table>\n<tr><th class=\"name\">ST-SIM of \u2193 against reference \u2192</th>";
   for (const CompareInput& in : r.inputs) s += "<th>" + xml_text(in.label) + "</th>";
   s += "</tr>\n";
   for (std::size_t i = 0; i < r.inputs.size(); ++i) {

@@ -164,6 +164,8 @@ std::string compare_json(const CompareResult& r) {
   w.end_array();
   w.key("stsim");
   matrix(w, r.stsim);
+  w.key("stsim_plain");
+  matrix(w, r.stsim_plain);
   w.key("similarity");
   matrix(w, r.similarity);
   w.key("predicted_confusion");
@@ -220,7 +222,7 @@ std::string compare_csv(const CompareResult& r) {
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) {
       out += csv_field(r.inputs[i].path) + ',' + csv_field(r.inputs[j].path) + ',';
-      if (std::isfinite(r.stsim[i][j])) append_decimal(out, r.stsim[i][j]);
+      append_decimal(out, r.stsim[i][j]);
       out += ',';
       append_decimal(out, r.similarity[i][j]);
       out += ',';

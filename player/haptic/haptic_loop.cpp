@@ -113,7 +113,7 @@ std::string HapticLoop::fault_text() const {
              " cycles";
     case ForceFault::overruns:
       return std::to_string(safety().overrun_limit_cycles()) +
-             " overruns in a row: the cycle's work did not finish before the next deadline";
+             " overruns in a row: the cycle's work took longer than the loop's period";
   }
   return "unknown fault";
 }
@@ -146,8 +146,8 @@ void HapticLoop::run() {
   priority_errno_.store(priority.error_number, std::memory_order_release);
 
   const auto period_ns = static_cast<std::int64_t>(std::llround(1e9 / config_.rate_hz));
-  // The catch-up rule (realtime/catch_up.hpp): half the overrun limit, so that one stall never
-  // trips the overrun watchdog; only work that keeps not fitting in the period does.
+  // The catch-up rule (realtime/catch_up.hpp): half the overrun limit; the watchdog counts only
+  // work that does not fit in the period, never the cycles caught up after a stall.
   const std::int64_t catch_up_periods = haptic_catch_up_periods(cycle_.safety().overrun_limit_cycles());
   const std::int64_t start_ns = monotonic_ns();
   std::int64_t deadline_ns = start_ns;
@@ -190,8 +190,11 @@ void HapticLoop::run() {
       return;
     }
     publish(record, false);
-    overran_last = overran(deadline_ns, monotonic_ns(), period_ns);
-    if (overran_last) telemetry_.record_overrun();
+    const std::int64_t finished_ns = monotonic_ns();
+    // The telemetry counts every cycle that finished behind its schedule; the watchdog only work
+    // that did not fit in the period (realtime/catch_up.hpp).
+    if (overran(deadline_ns, finished_ns, period_ns)) telemetry_.record_overrun();
+    overran_last = work_overran(woke_ns, finished_ns, period_ns);
   }
 }
 

@@ -5,15 +5,16 @@
 //     lateness never accumulates. After a stall the loop catches up, running the missed cycles
 //     back to back, while it is fewer than half SafetySettings::overrun_limit_cycles periods
 //     behind; further behind it skips: the schedule moves forward to the latest deadline passed
-//     (the rule: realtime/catch_up.hpp). Caught-up cycles overrun, so a single stall gives at most
-//     about half the overrun limit in a row and never trips the watchdog; the overrun fault
-//     means that the cycle's work itself does not fit in the period. Caught-up cycles keep the
-//     slew limit over wall time: the force changes by at most the slew limit times the periods
-//     that passed;
+//     (the rule: realtime/catch_up.hpp). Caught-up cycles keep the slew limit over wall time: the
+//     force changes by at most the slew limit times the periods that passed;
 //   - priority: request_realtime_priority on the loop thread (SCHED_FIFO when granted);
-//   - telemetry: LoopTelemetry (lateness p50/p99/max, overruns, skips, rate). An overrun is a
-//     cycle whose work finished after the next deadline; the safety stack faults after
-//     SafetySettings::overrun_limit_cycles of them in a row.
+//   - telemetry: LoopTelemetry (lateness p50/p99/max, overruns, skips, rate). An overrun there is
+//     a cycle whose work finished after the next deadline (caught-up cycles too);
+//   - the overrun watchdog: the safety stack faults after SafetySettings::overrun_limit_cycles
+//     cycles in a row whose own work, from wake-up to end, took longer than a period: work that
+//     does not fit. A late wake-up and the cycles caught up after it never count, however many
+//     stalls come close together (a thread at normal priority is woken late now and then), so a
+//     stall never trips it; a stall inside a cycle's work counts once.
 //
 // Every cycle's record {time, probe position, force sent, safety flags} goes into an SPSC ring
 // (when log_capacity_rows > 0) that another thread drains (ForceLogWriter); a full ring never

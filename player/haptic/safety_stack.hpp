@@ -14,8 +14,9 @@
 //               period on the first cycle, which starts from zero force);
 //   5. stale    stale-input watchdog: the probe's sequence unchanged (no new position) for
 //               stale_limit_cycles cycles in a row: zero force and the stale_input fault;
-//   6. overrun  overrun_limit_cycles overruns in a row (a cycle's work finished after the next
-//               deadline): zero force and the overruns fault.
+//   6. overrun  overrun_limit_cycles overruns in a row (SafetyInput::previous_overran; the loop
+//               passes cycles whose own work took longer than a period): zero force and the
+//               overruns fault.
 //
 // A fault latches: every later apply() returns zero with the fault's flag, until reset(). stop()
 // and device_fault() return zero at once too (flags stop, device).
@@ -65,7 +66,7 @@ struct SafetySettings {
   double wall_margin_m = 0.010;
   double wall_stiffness_N_per_m = 200.0;  // capped to the device's Kmax
   int stale_limit_cycles = 20;            // 20 ms at 1 kHz
-  int overrun_limit_cycles = 10;         // the loop catches up fewer missed periods than half this
+  int overrun_limit_cycles = 10;         // cycles in a row whose work took longer than a period
 };
 
 struct SafetyInput {
@@ -73,7 +74,7 @@ struct SafetyInput {
   Vec3 scene_N;                 // the scene's force this cycle (summed, cross-faded)
   Vec3 position_m;              // the probe
   std::uint64_t sequence = 0;   // ProbeSample::sequence
-  bool previous_overran = false;  // the previous cycle's work finished after its next deadline
+  bool previous_overran = false;  // the previous cycle's work took longer than a period (catch_up.hpp)
 };
 
 struct SafetyOutput {

@@ -8,11 +8,15 @@
 
 #include "storage/limits.hpp"
 #include "storage/read_file.hpp"
+#include "storage/text_bytes.hpp"
 #include "storage/touch_trace/evdev_line.hpp"
 #include "storage/touch_trace/touch_log.hpp"
 
 namespace vimg {
 namespace {
+
+// Lines that are not text (text_bytes.hpp) after which a file is called binary.
+constexpr int kBinaryLinesOfABinaryFile = 3;
 
 // What one finger reported so far; values persist between frames (evdev semantics).
 struct Contact {
@@ -305,12 +309,23 @@ TouchTraceParseResult parse_touch_trace(std::string_view text, const std::string
   int line_number = 0;
   std::size_t pos = 0;
   bool reading = true;
+  int binary_lines = 0;
+  std::size_t first_binary = std::string_view::npos;  // offset in the file
   while (reading && pos < text.size()) {
     std::size_t eol = text.find('\n', pos);
     if (eol == std::string_view::npos) eol = text.size();
     const std::string_view line = text.substr(pos, eol - pos);
+    const std::size_t line_start = pos;
     pos = eol + 1;
     ++line_number;
+    // A line that no text file holds is not shown (it would be bytes of garbage); a few of them and
+    // the file is not a text recording at all.
+    if (const std::size_t binary = first_binary_byte(line); binary != std::string_view::npos) {
+      if (first_binary == std::string_view::npos) first_binary = line_start + binary;
+      if (++binary_lines == kBinaryLinesOfABinaryFile) break;
+      list.error(line_number, "the line is not text (binary data at byte " + std::to_string(line_start + binary) + ")");
+      continue;
+    }
     const EvdevLine l = reader.read(line);
     if (l.kind == EvdevLine::Kind::bad && !list.keeps(line_number)) {
       list.count(Diagnostic::Severity::error);  // beyond the limit: counted on the summary line
@@ -321,6 +336,11 @@ TouchTraceParseResult parse_touch_trace(std::string_view text, const std::string
     if (l.kind == EvdevLine::Kind::event) reading = builder.event(l.event, line_number);
   }
   TouchTraceParseResult result;
+  if (binary_lines == kBinaryLinesOfABinaryFile) {
+    result.diagnostics.push_back({Diagnostic::Severity::error, file_name, 0,
+                                  "this is not a text touch recording (binary data at byte " + std::to_string(first_binary) + ")"});
+    return result;
+  }
   result.trace = builder.finish();
   result.diagnostics = list.take();
   return result;

@@ -13,6 +13,10 @@
 // Limits: kMaxTouchTraceFileBytes, kMaxGestureRows samples, kMaxTouchTraceFinger fingers at once.
 // Messages: at most kMaxDiagnosticsPerFile (DiagnosticList). Reading stops at an event after an
 // error; the bad lines before that event beyond the limit are counted on the summary line.
+// A file that is not text (binary data: a NUL, another control character, bytes that are not UTF-8;
+// storage/text_bytes.hpp) is refused with one message once 3 of its lines are such, "FILE: error:
+// this is not a text touch recording (binary data at byte N)", N counted from 0 as hexdump does;
+// fewer such lines are each one error, "the line is not text (binary data at byte N)", never shown.
 #include <filesystem>
 #include <optional>
 #include <string>

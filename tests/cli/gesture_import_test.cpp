@@ -139,5 +139,40 @@ TEST_F(GestureImport, BadRecordingsExitOneWithFileAndLine) {
   EXPECT_FALSE(fs::exists(dir_ / "g.csv"));
 }
 
+// A file that is not text (storage/text_bytes.hpp) gets one message naming the first byte that is
+// not, counted from 0, and reading stops: no line of its bytes is shown.
+TEST_F(GestureImport, ABinaryFileIsNamedOnceAsNotATextRecording) {
+  std::string bytes = "# EVEMU 1.3\n";  // 12 bytes of text, then every byte value four times over
+  for (int round = 0; round < 4; ++round) {
+    for (int b = 0; b < 256; ++b) bytes.push_back(static_cast<char>(b));
+  }
+  std::ofstream(dir_ / "data.bin", std::ios::binary) << bytes;
+  const auto run = vimg("gesture import data.bin --px-per-mm 1 --out g.csv");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.out, "data.bin: error: this is not a text touch recording (binary data at byte 12)\n");
+  // A picture: the PNG signature's first byte, 0x89, starts no UTF-8 sequence.
+  std::ofstream(dir_ / "picture.png", std::ios::binary) << "\x89PNG\r\n\x1a\n" << bytes;
+  const auto picture = vimg("gesture import picture.png --px-per-mm 1 --out g.csv");
+  EXPECT_EQ(picture.exit_code, 1);
+  EXPECT_EQ(picture.out, "picture.png: error: this is not a text touch recording (binary data at byte 0)\n");
+  EXPECT_FALSE(fs::exists(dir_ / "g.csv"));
+}
+
+// A text recording with a damaged line is still read as text: that line is an error at its line,
+// without its bytes.
+TEST_F(GestureImport, OneLineThatIsNotTextIsAnErrorAtItsLine) {
+  const std::string head = "E: 0.0 0003 0039 5\nE: 0.0 0003 0035 1\n";
+  std::ofstream(dir_ / "nul.evemu", std::ios::binary)
+      << head << std::string("E: 0.0 0003 \0\xff 1\n", 17) << "E: 0.0 0000 0000 0\n";
+  const auto run = vimg("gesture import nul.evemu --px-per-mm 1 --out g.csv");
+  EXPECT_EQ(run.exit_code, 1);
+  const std::string at = std::to_string(head.size() + 12);
+  EXPECT_NE(run.out.find("nul.evemu:3: error: the line is not text (binary data at byte " + at + ")\n"), std::string::npos)
+      << run.out;
+  EXPECT_EQ(run.out.find("\\x"), std::string::npos) << "the line's bytes are not shown: " << run.out;
+  EXPECT_EQ(run.out.find("not a text touch recording"), std::string::npos) << run.out;
+  EXPECT_FALSE(fs::exists(dir_ / "g.csv"));
+}
+
 }  // namespace
 }  // namespace vimg

@@ -78,6 +78,30 @@ TEST_F(ImportCommand, FollowsTheCommandLineConventions) {
   EXPECT_EQ(vimg("import " + path("n.txt") + " --out " + path("n.vimg")).exit_code, 1);
 }
 
+// PNG specification, 11.2.2 IHDR: "Zero is an invalid value" for the width and for the height. A
+// header that gives one is refused by name, by every command that reads a PNG, before its image
+// data is looked at (it used to be refused for inflating past the 0 bytes its 0 rows need).
+TEST_F(ImportCommand, APngWithAZeroWidthOrHeightIsRefusedForWhatPngForbids) {
+  const struct {
+    const char* name;
+    int width, height;
+    const char* gives;
+  } cases[] = {{"no-width.png", 0, 10, "a width of 0"}, {"no-height.png", 10, 0, "a height of 0"}, {"none.png", 0, 0, "a width and a height of 0"}};
+  for (const auto& c : cases) {
+    write(c.name, test::make_png(c.width, c.height, 1, {}));
+    const std::string expected = std::string(c.name) + ": error: the PNG header gives " + c.gives +
+                                 "; PNG requires a width and height of at least 1\n";
+    for (const std::string& command : {"validate " + path(c.name), "info " + path(c.name),
+                                      "import " + path(c.name) + " --out " + path("out.vimg") + " --width-mm 40"}) {
+      const CommandRun r = vimg(command);
+      EXPECT_EQ(r.exit_code, 1) << command << "\n" << r.out;
+      EXPECT_NE(r.out.find(expected), std::string::npos) << command << "\n" << r.out;
+      EXPECT_EQ(r.out.find("inflates"), std::string::npos) << command << "\n" << r.out;
+      EXPECT_FALSE(std::filesystem::exists(dir_ / "out.vimg"));
+    }
+  }
+}
+
 // Runs `vimg import INPUT --out OUTPUT ...` and sends `signal_number` when the program shows that the
 // import is under way: it has read its input (inotify: the file was closed after reading). The
 // exit status, or -1.

@@ -1,5 +1,6 @@
-// The catch-up rule of the haptic loop on a simulated clock: one stall of any length never gives
-// the overrun limit's worth of overruns in a row, while work that does not fit in the period does.
+// The catch-up rule of the haptic loop on a simulated clock: stalls, one or many close together, of
+// any length, never give the overrun limit's worth of overruns in a row, while work that does not
+// fit in the period does.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,14 +17,15 @@ constexpr std::int64_t kPeriodUs = 1000;  // 1 kHz
 constexpr int kOverrunLimit = 10;         // SafetySettings' default
 
 struct ScheduleRun {
-  int longest_overrun_streak = 0;  // what the overrun watchdog counts
+  int longest_overrun_streak = 0;  // what the overrun watchdog counts: work_overran in a row
+  int behind = 0;                  // what the telemetry counts: cycles that finished after the next deadline
   int skips = 0;
   bool faulted = false;  // the streak reached the limit
 };
 
 // The haptic loop's schedule (HapticLoop::run) on a fake clock: sleep until the deadline, wake
 // `wake_delay_us(n)` late, pace the cycle, work `work_us(n)`, and count overruns in a row as the
-// safety stack does.
+// loop hands them to the safety stack.
 ScheduleRun run_schedule(int cycles, const std::function<std::int64_t(int)>& wake_delay_us,
                          const std::function<std::int64_t(int)>& work_us) {
   FakeClock clock(1'000'000);
@@ -36,11 +38,13 @@ ScheduleRun run_schedule(int cycles, const std::function<std::int64_t(int)>& wak
     deadline_ns += period_ns;
     clock.sleep_until_us(deadline_ns / 1000);
     clock.advance_us(wake_delay_us(n));
-    const PacedDeadline paced = pace_deadline(deadline_ns, clock.now_us() * 1000, period_ns, catch_up);
+    const std::int64_t woke_ns = clock.now_us() * 1000;
+    const PacedDeadline paced = pace_deadline(deadline_ns, woke_ns, period_ns, catch_up);
     deadline_ns = paced.deadline_ns;
     if (paced.skipped) ++run.skips;
     clock.advance_us(work_us(n));
-    streak = overran(deadline_ns, clock.now_us() * 1000, period_ns) ? streak + 1 : 0;
+    if (overran(deadline_ns, clock.now_us() * 1000, period_ns)) ++run.behind;
+    streak = work_overran(woke_ns, clock.now_us() * 1000, period_ns) ? streak + 1 : 0;
     run.longest_overrun_streak = std::max(run.longest_overrun_streak, streak);
   }
   run.faulted = run.longest_overrun_streak >= kOverrunLimit;
@@ -105,14 +109,36 @@ TEST(CatchUp, NoSingleStallOfAnyLengthReachesTheOverrunLimit) {
   }
 }
 
+// Stalls close together, as at the start of a loop on a busy machine: with each cycle's work short,
+// however many wake-ups come late by up to 4.9 periods, every few cycles, the loop is behind on
+// many cycles in a row but no cycle's work overran. Counting the cycles that finish behind (the
+// earlier watchdog) faulted here.
+TEST(CatchUp, StallsCloseTogetherNeverTripTheWatchdog) {
+  for (const int every : {1, 2, 3, 4, 5}) {
+    for (const std::int64_t late_us : {2 * kPeriodUs, 3 * kPeriodUs + 500, 4 * kPeriodUs + 900}) {
+      const ScheduleRun run = run_schedule(200, [=](int n) { return n % every == 0 && n < 60 ? late_us : 0; },
+                                           once_at(-1, 0, 20));
+      EXPECT_EQ(run.longest_overrun_streak, 0) << "every " << every << ", " << late_us << " us late";
+      EXPECT_FALSE(run.faulted);
+    }
+  }
+  // Stalls of two periods inside the work of every other cycle: each stalled cycle overran, the
+  // cycles between did not; ten behind in a row.
+  const ScheduleRun in_work = run_schedule(40, once_at(-1, 0), [](int n) { return n < 12 && n % 2 == 0 ? 2 * kPeriodUs : 20; });
+  EXPECT_EQ(in_work.longest_overrun_streak, 1);
+  EXPECT_GE(in_work.behind, 10);
+}
+
 TEST(CatchUp, ALongStallSkipsInsteadOfBurstingAndTheLoopKeepsItsSchedule) {
   const ScheduleRun run = run_schedule(100, once_at(-1, 0), once_at(10, 50 * kPeriodUs, 20));
   EXPECT_EQ(run.skips, 1);
   EXPECT_EQ(run.longest_overrun_streak, 1);
-  // A short stall is caught up: no skip, a few overruns.
+  // A short stall is caught up: no skip; the stalled cycle and the two caught up behind it finish
+  // late, and only the stalled one's work did not fit.
   const ScheduleRun short_stall = run_schedule(100, once_at(-1, 0), once_at(10, 3 * kPeriodUs + 500, 20));
   EXPECT_EQ(short_stall.skips, 0);
-  EXPECT_EQ(short_stall.longest_overrun_streak, 3);
+  EXPECT_EQ(short_stall.behind, 3);
+  EXPECT_EQ(short_stall.longest_overrun_streak, 1);
 }
 
 TEST(CatchUp, WorkThatDoesNotFitInThePeriodStillTripsTheWatchdog) {
