@@ -234,7 +234,8 @@ TEST_F(LocationStudyRun, SigtermAndSigintStopBetweenMarksWithTheFileIntact) {
   EXPECT_EQ(termed.code, 143) << termed.err;
   // Handled, not merely killed: the loop was stopped (zero force) and the program says where it stands.
   EXPECT_NE(termed.err.find("vimg-force: SIGTERM: the device is at rest; 2 trials are in "), std::string::npos) << termed.err;
-  EXPECT_LT(termed.seconds, 2.0);
+  // No bound on how long that took: the message above says the signal was handled, not waited out
+  // (the trial would have lasted a minute), and wait_for bounds a hang.
   const std::string text = read_text(csv("P03"));
   EXPECT_EQ(text.back(), '\n');
   std::vector<LocationTrial> rows = trials_in(csv("P03"));
@@ -249,7 +250,9 @@ TEST_F(LocationStudyRun, SigtermAndSigintStopBetweenMarksWithTheFileIntact) {
   while (read_text(interrupt.err).find("\ntrial 3 of 14  ") == std::string::npos && std::chrono::steady_clock::now() < give_up) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  ::kill(interrupt.pid, SIGINT);
+  const bool in_trial_3 = read_text(interrupt.err).find("\ntrial 3 of 14  ") != std::string::npos;
+  ::kill(interrupt.pid, in_trial_3 ? SIGINT : SIGKILL);
+  ASSERT_TRUE(in_trial_3) << "trial 3 never started: " << read_text(interrupt.err);
   const Exit interrupted = wait_for(interrupt);
   EXPECT_EQ(interrupted.code, 130) << interrupted.err;
   EXPECT_NE(interrupted.err.find("vimg-force: SIGINT: the device is at rest; 2 trials are in "), std::string::npos)
@@ -267,7 +270,6 @@ TEST_F(LocationStudyRun, AHidDeviceThatIsNotThereExitsOneAndWritesNothing) {
   any.insert(any.end(), {"--device", "hid"});
   const Exit e = run(any, root_);
   EXPECT_EQ(e.code, 1) << e.err;
-  EXPECT_LT(e.seconds, 5.0);
   EXPECT_EQ(e.err.rfind("vimg-force: error: no HID device", 0), 0u) << e.err;
   std::vector<std::string> named = study;
   named.insert(named.end(), {"--device", "hid:/dev/hidraw-none"});
