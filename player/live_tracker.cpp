@@ -102,7 +102,9 @@ std::size_t LiveTracker::steps_at(double time_s, double, std::span<FingerStep, k
     s.position_m = f.down ? position_at(f, time_s) : lifted_at;
     s.previous_position_m = f.rendered_valid ? f.rendered_m : s.position_m;
     // Velocity is reported only while the events are fresh enough to trust it.
-    const bool fresh = f.down && time_s - f.event_time_s <= options_.max_extrapolation_s;
+    // With prediction, as long as the predictor still follows the finger (until the silence fade ends).
+    const double fresh_for_s = horizon_s_ > 0.0 ? kSilenceStop_s : options_.max_extrapolation_s;
+    const bool fresh = f.down && time_s - f.event_time_s <= fresh_for_s;
     s.velocity_m_per_s = fresh ? Vec3{f.vx_m_per_s, f.vy_m_per_s, 0.0} : Vec3{};
     s.pressure = f.pressure;
     f.rendered_m = s.position_m;

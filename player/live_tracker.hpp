@@ -17,7 +17,9 @@
 // panel's latency plus the output path's (RealtimeRenderer sets it from its options and the
 // sink). A lift ends the touch at once where it is felt: its final step ends at the position
 // already rendered, so nothing is rendered past the lift, not even the way back to the up event's
-// position. H = 0 (the default) keeps the dead reckoning above.
+// position. While the prediction follows a finger (up to kSilenceStop_s after its last event) its
+// filtered velocity is reported, so late-stamped events still drive speed-dependent shaders.
+// H = 0 (the default) keeps the dead reckoning above.
 #include <array>
 #include <cstddef>
 #include <cstdint>

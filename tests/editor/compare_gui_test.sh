@@ -40,7 +40,9 @@ pick() {
   read -r _ _ x y w h <<<"$(grep "^layout library_lib/$1 " "$art/$current.layout" | tail -1)"
   xdotool mousemove --sync $((WX + x + w / 2)) $((WY + y + h / 2))
   if [ "${3:-}" = ctrl ]; then
-    xdotool keydown ctrl click 1 keyup ctrl
+    # ImGui's SDL backend reads the modifier state once a frame, not in event order: Ctrl is held
+    # across the click for a few frames (the selection count below is what the test waits on).
+    xdotool keydown ctrl; sleep 0.2; xdotool click 1; sleep 0.2; xdotool keyup ctrl
   else
     xdotool click 1
   fi

@@ -78,6 +78,18 @@ TEST(LivePrediction, AFingerThatStopsSendingEventsComesToRestWhereItWasLastSeen)
   EXPECT_DOUBLE_EQ(one_step(tracker, 1.5).position_m.x * 1e3, path_x_mm(0.5));
 }
 
+TEST(LivePrediction, TheFingersVelocityIsReportedAsLongAsThePredictionFollowsIt) {
+  // Events that arrive late (stamped 60 ms before the step, as a page stamps a sample by its age)
+  // must still give speed-dependent shaders the finger's velocity, whatever the model.
+  for (TouchPredictionModel model : {TouchPredictionModel::none, TouchPredictionModel::fitted}) {
+    LiveTracker tracker;
+    tracker.set_prediction(0.05, model);
+    feed(tracker, 0.5);
+    EXPECT_NEAR(one_step(tracker, 0.56).velocity_m_per_s.x, kSpeed_mm_per_s * 1e-3, 1e-3) << touch_prediction_model_name(model);
+    EXPECT_EQ(one_step(tracker, 0.5 + kSilenceStop_s + 0.01).velocity_m_per_s.x, 0.0);
+  }
+}
+
 TEST(LivePrediction, TheRenderersHorizonIsThePanelsLatencyPlusTheSinksOwn) {
   for (bool enabled : {true, false}) {
     test::FakeDeviceSink sink(1.0, 400);  // 400 samples queued at 8 kHz: 50 ms
