@@ -10,11 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "bench/henze_traces.hpp"
 #include "bench/latency_scenario.hpp"
-#include "player/gesture_prediction.hpp"
-#include "player/touch_trace_gesture.hpp"
 #include "primitives/touch_prediction/prediction_protocol.hpp"
-#include "storage/touch_trace/evdev_trace.hpp"
 
 namespace vimg {
 namespace {
@@ -53,23 +51,8 @@ void BM_AddEvent(benchmark::State& state) {
 }
 BENCHMARK(BM_AddEvent);
 
-constexpr double kPxPerMm = 12.72;
-
-std::vector<TouchStroke> task_strokes(const std::string& dir, const char* prefix) {
-  std::vector<TouchStroke> all;
-  for (int p = 1; p <= 4; ++p) {
-    const std::string path = dir + "/" + prefix + "-participant" + std::to_string(p) + ".txt";
-    const TouchTraceParseResult trace = load_touch_trace(path);
-    for (const Diagnostic& d : trace.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
-    if (!trace.trace) continue;
-    TouchMapping mapping;
-    mapping.units_per_mm = kPxPerMm;
-    const TraceGestureResult g = trace_to_gesture(*trace.trace, mapping, path);
-    if (!g.gesture) continue;
-    for (TouchStroke& s : touch_strokes_of(*g.gesture)) all.push_back(std::move(s));
-  }
-  return all;
-}
+using henze_traces::kPxPerMm;
+using henze_traces::task_strokes;
 
 int print_tables(const std::string& dir) {
   struct Task {

@@ -7,31 +7,16 @@
 #include <string>
 #include <vector>
 
-#include "player/gesture_prediction.hpp"
-#include "player/touch_trace_gesture.hpp"
-#include "primitives/touch_prediction/prediction_protocol.hpp"
-#include "storage/touch_trace/evdev_trace.hpp"
+#include "bench/henze_traces.hpp"
 
 namespace vimg {
 namespace {
 
-constexpr double kPxPerMm = 12.72;  // the paper: 10 mm = 127.20 px
+using henze_traces::kPxPerMm;
 
 std::vector<TouchStroke> task_strokes(const std::string& prefix) {
-  std::vector<TouchStroke> all;
-  for (int participant = 1; participant <= 4; ++participant) {
-    const std::string path = std::string(VIMG_TEST_DATA_DIR) + "/touch-latency-henze2017/" + prefix + "-participant" +
-                             std::to_string(participant) + ".txt";
-    const TouchTraceParseResult trace = load_touch_trace(path);
-    EXPECT_TRUE(trace.trace.has_value()) << path;
-    if (!trace.trace) continue;
-    TouchMapping mapping;
-    mapping.units_per_mm = kPxPerMm;
-    const TraceGestureResult g = trace_to_gesture(*trace.trace, mapping, path);
-    EXPECT_TRUE(g.gesture.has_value()) << path;
-    if (!g.gesture) continue;
-    for (TouchStroke& s : touch_strokes_of(*g.gesture)) all.push_back(std::move(s));
-  }
+  std::vector<TouchStroke> all = henze_traces::task_strokes(std::string(VIMG_TEST_DATA_DIR) + "/touch-latency-henze2017", prefix);
+  EXPECT_FALSE(all.empty()) << prefix;
   return all;
 }
 
