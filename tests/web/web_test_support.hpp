@@ -7,7 +7,7 @@
 
 #include "hal/actuator_profile.hpp"
 #include "storage/image_io.hpp"
-#include "web/vsc/vsc_image.hpp"
+#include "storage/vsc/vsc_image.hpp"
 
 namespace vimg::test {
 

@@ -11,7 +11,7 @@
 #include "storage/atomic_file.hpp"
 #include "storage/image_io.hpp"
 #include "storage/read_file.hpp"
-#include "web/vsc/vsc_image.hpp"
+#include "storage/vsc/vsc_image.hpp"
 
 namespace vimg {
 

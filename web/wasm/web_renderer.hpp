@@ -15,7 +15,7 @@
 #include "player/contact_mixer.hpp"
 #include "player/live_tracker.hpp"
 #include "player/scene.hpp"
-#include "web/vsc/vsc_image.hpp"
+#include "storage/vsc/vsc_image.hpp"
 
 namespace vimg {
 
