@@ -13,7 +13,7 @@
 #include <variant>
 #include <vector>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "hal/fault_log.hpp"
 #include "player/drive_sink.hpp"
 

@@ -2,7 +2,7 @@
 // A DRV2605L driver wired to its emulator on an emulated bus, on a fake clock.
 #include <memory>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "realtime/clock.hpp"
 #include "hal/drv2605l_driver.hpp"
 #include "hal/drv2605l_emulator.hpp"

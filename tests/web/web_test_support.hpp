@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "storage/image_io.hpp"
 #include "storage/vsc/vsc_image.hpp"
 

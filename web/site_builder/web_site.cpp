@@ -7,7 +7,7 @@
 #include <set>
 #include <system_error>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "storage/atomic_file.hpp"
 #include "storage/image_io.hpp"
 #include "storage/read_file.hpp"

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 
 namespace vimg {
 namespace {

@@ -1,4 +1,4 @@
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 
 #include "storage/diagnostic.hpp"
 #include "storage/read_file.hpp"
