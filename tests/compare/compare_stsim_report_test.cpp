@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "primitives/perception/perceptual_similarity.hpp"
-#include "study/report_json_reader.hpp"
+#include "storage/json_reader.hpp"
 #include "tests/cli/run_command.hpp"
 
 namespace vimg {
@@ -62,9 +62,9 @@ std::string read_text(const fs::path& p) {
 
 double bounded(double v) { return std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 1.0); }
 
-std::vector<std::vector<double>> matrix_of(const study::JsonValue& root, const char* key) {
+std::vector<std::vector<double>> matrix_of(const JsonValue& root, const char* key) {
   std::vector<std::vector<double>> m;
-  const study::JsonValue* value = root.find(key);
+  const JsonValue* value = root.find(key);
   EXPECT_NE(value, nullptr) << key;
   if (!value) return m;
   for (const auto& row : value->items) {
@@ -96,7 +96,7 @@ TEST_F(CompareStSim, TheReportsShowStSimAsTheSimilarityTakesItAndTheJsonKeepsThe
         test::run_command("cd '" + dir_.string() + "' && '" + kVimg + "' compare a.csv b.csv c.csv --out " + out);
     ASSERT_EQ(run.exit_code, 0) << run.out;
   }
-  const auto parsed = study::parse_json(read_text(dir_ / "r.json"), "r.json");
+  const auto parsed = parse_json(read_text(dir_ / "r.json"), "r.json");
   ASSERT_TRUE(parsed.value);
   const auto stsim = matrix_of(*parsed.value, "stsim");
   const auto plain = matrix_of(*parsed.value, "stsim_plain");
