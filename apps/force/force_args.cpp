@@ -4,6 +4,7 @@
 
 #include "cmdline/command_line.hpp"
 #include "storage/diagnostic.hpp"
+#include "storage/number_text.hpp"
 #include "storage/study/trial_log.hpp"
 
 namespace vimg::force_app {
@@ -57,6 +58,22 @@ ForceArgsResult parse_force_args(int argc, const char* const* argv) {
   auto* marks = app.add_option("--marks", a.marks_file,
                                "with --study and --device sim: the simulated participant presses button 0 at these times "
                                "(CSV trial,time_s: seconds after the trial's start, one row per trial)");
+  std::string sim_fault;
+  auto* fault = app.add_option("--sim-fault", sim_fault,
+                               "with --study and --device sim, to try the redo of a trial: a read of the simulated device "
+                               "fails " + format_decimal(kSimFaultTime_s) + " s into each of trial TRIAL's first COUNT attempts")
+                    ->type_name("TRIAL:COUNT")
+                    ->check(CLI::Validator(
+                        [](std::string& v) -> std::string {
+                          const std::size_t colon = v.find(':');
+                          const auto whole = [](const std::string& t) {
+                            return !t.empty() && t.size() <= 6 && t.find_first_not_of("0123456789") == std::string::npos &&
+                                   std::stoul(t) > 0;
+                          };
+                          if (colon != std::string::npos && whole(v.substr(0, colon)) && whole(v.substr(colon + 1))) return {};
+                          return "'" + v + "' is not TRIAL:COUNT (two whole numbers from 1)";
+                        },
+                        "TRIAL:COUNT"));
   app.footer(
       "Exit status: 0 when --seconds has elapsed or the study is complete; 130 after SIGINT (Ctrl-C) and 143 after "
       "SIGTERM, in both cases only after the device has been sent zero force and the log and telemetry files are "
@@ -69,6 +86,11 @@ ForceArgsResult parse_force_args(int argc, const char* const* argv) {
   };
   if (path->count() > 0 && !a.is_sim()) return usage("--path needs --device sim (a real device is moved by hand)");
   if (marks->count() > 0 && !a.is_sim()) return usage("--marks needs --device sim (a participant presses a real button)");
+  if (fault->count() > 0 && !a.is_sim()) return usage("--sim-fault needs --device sim");
+  if (fault->count() > 0) {
+    a.sim_fault_trial = std::stoul(sim_fault.substr(0, sim_fault.find(':')));
+    a.sim_fault_count = std::stoi(sim_fault.substr(sim_fault.find(':') + 1));
+  }
   if (study->count() > 0) {
     if (scene->count() > 0) return usage("give a SCENE or --study, not both (a study makes its own scenes)");
     for (const auto* o : {outside, seconds, log, telemetry}) {
@@ -81,7 +103,7 @@ ForceArgsResult parse_force_args(int argc, const char* const* argv) {
     }
   } else {
     if (scene->count() == 0) return usage("SCENE or --study is required");
-    for (const auto* o : {participant, results, restart, marks}) {
+    for (const auto* o : {participant, results, restart, marks, fault}) {
       if (o->count() > 0) return usage(o->get_name() + " needs --study");
     }
   }

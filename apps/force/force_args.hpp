@@ -27,9 +27,17 @@ struct ForceArgs {
   std::string results_dir;  // --results DIR: DIR/ID.location.csv
   bool restart = false;     // --restart: a finished participant's file is kept aside, the study begins again
   std::string marks_file;   // sim only: per trial, when the simulated participant presses button 0 (trial,time_s)
+  // sim only, for tests of the redo (--sim-fault TRIAL:COUNT): a read of the simulated device fails
+  // kSimFaultTime_s into each of trial sim_fault_trial's first sim_fault_count attempts (0: none).
+  std::size_t sim_fault_trial = 0;
+  int sim_fault_count = 0;
   bool is_sim() const { return device == "sim"; }
   bool is_study() const { return !study_file.empty(); }
 };
+
+// When an injected fault (--sim-fault) comes in a trial: on the trial's own clock, before any mark a
+// test scripts.
+inline constexpr double kSimFaultTime_s = 0.1;
 
 struct ForceArgsResult {
   std::optional<ForceArgs> args;

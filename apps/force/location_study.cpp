@@ -27,6 +27,9 @@ namespace vimg::force_app {
 namespace {
 
 constexpr const char* kTrialFileSuffix = "location";
+// Device faults in a row, without a mark in between, that end the study (docs/volume.md, "Location
+// study"): a trial that faults this often will not go through on this device today.
+constexpr int kMaxFaultsInARow = 3;
 
 void error(const std::string& message) { std::fprintf(stderr, "vimg-force: error: %s\n", message.c_str()); }
 
@@ -115,14 +118,35 @@ int stopped_by_signal(int signal_number, const TrialLog& log) {
   return exit_code_for_signal(signal_number);
 }
 
-// How a phase that did not end in a mark ends the program (the status line closed, the fault said).
+// How a phase that did not end in a mark, nor in a fault (redo_after_fault), ends the program (the
+// status line closed).
 int stop_after(StudyRun& run, const Phase& phase, const TrialLog& log) {
   run.status.finish();
   if (!phase.started) return cmdline::kExitFailure;
-  if (phase.end.why == LoopRunEnd::Why::fault) error("device fault: " + phase.end.fault);
   if (phase.end.why == LoopRunEnd::Why::signal) return stopped_by_signal(phase.end.signal_number, log);
   return phase.end.exit_code();
 }
+
+// A device fault ends the trial under way (wait or exploration) unrecorded, with the device at rest:
+// the watch stopped the loop, zero force, before it returned. The trial then runs again from its
+// start; the kMaxFaultsInARow-th fault in a row (no trial marked in between) ends the study instead.
+// True: redo the trial.
+bool redo_after_fault(StudyRun& run, const Phase& phase, std::size_t k, int& faults_in_a_row, const TrialLog& log) {
+  run.status.finish();
+  ++faults_in_a_row;
+  if (faults_in_a_row < kMaxFaultsInARow) {
+    std::fprintf(stderr, "vimg-force: device fault in trial %zu: redoing it (the device is at rest; fault %d in a row of at most %d): %s\n",
+                 k, faults_in_a_row, kMaxFaultsInARow, phase.end.fault.c_str());
+    return true;
+  }
+  std::fprintf(stderr,
+               "vimg-force: error: device fault in trial %zu, %d in a row: the study stops with the device at rest; %zu trials are "
+               "in %s, the next run continues at trial %zu: %s\n",
+               k, faults_in_a_row, log.completed(), log.path().c_str(), log.completed() + 1, phase.end.fault.c_str());
+  return false;
+}
+
+bool faulted(const Phase& phase) { return phase.started && phase.end.why == LoopRunEnd::Why::fault; }
 
 }  // namespace
 
@@ -195,7 +219,8 @@ int run_location_study(const ForceArgs& args, const std::atomic<int>& signal_rec
     std::fprintf(stderr, "vimg-force: button 0 marks%s\n", run.keys.enabled() ? " (or Enter on this terminal)" : "");
   }
 
-  for (std::size_t k = log.completed() + 1; k <= total; ++k) {
+  int faults_in_a_row = 0;  // since the last mark: trial k's attempts that faulted
+  for (std::size_t k = log.completed() + 1; k <= total;) {
     if (const int s = signal_received.load()) return stopped_by_signal(s, log);  // between trials: at rest
     const study::LocationTrialPlan& trial = plan[k - 1];
     const StudySet set = make_study_set(trial.data_seed);
@@ -211,6 +236,7 @@ int run_location_study(const ForceArgs& args, const std::atomic<int>& signal_rec
         error(simulated.error.empty() ? "cannot make the simulated device" : simulated.error);
         return cmdline::kExitFailure;
       }
+      if (k == args.sim_fault_trial && faults_in_a_row < args.sim_fault_count) sim->fail_read_at(kSimFaultTime_s);
       port = std::make_unique<MarkingPort>(*sim, run.config.rate_hz,
                                            press_times_s ? std::optional<double>((*press_times_s)[k - 1]) : std::nullopt);
     } else {
@@ -218,6 +244,10 @@ int run_location_study(const ForceArgs& args, const std::atomic<int>& signal_rec
                         std::to_string(k) + " of " + total_text);
       MarkingPort ready(*device.device);
       const Phase wait = run_phase(run, ready, build_resting_scene(profile), {});
+      if (faulted(wait)) {
+        if (redo_after_fault(run, wait, k, faults_in_a_row, log)) continue;
+        return cmdline::kExitFailure;
+      }
       if (!wait.started || wait.end.why != LoopRunEnd::Why::finished) return stop_after(run, wait, log);
       port = std::make_unique<MarkingPort>(*device.device);
     }
@@ -227,7 +257,11 @@ int run_location_study(const ForceArgs& args, const std::atomic<int>& signal_rec
     if (!run.status.terminal()) std::fprintf(stderr, "%s\n", format_trial_status(k, total, trial.metaphor, 0.0).c_str());
     const Phase explore = run_phase(run, *port, build_location_trial_scene(set, trial.metaphor),
                                     [&](double clock_s) { return format_trial_status(k, total, trial.metaphor, clock_s); });
-    if (!port->marked()) return stop_after(run, explore, log);
+    if (!port->marked()) {
+      if (!faulted(explore)) return stop_after(run, explore, log);
+      if (redo_after_fault(run, explore, k, faults_in_a_row, log)) continue;
+      return cmdline::kExitFailure;
+    }
 
     // 3. The device is at rest; the row goes to disk, synced, before the next trial.
     const ProbeMark mark = port->mark();
@@ -245,7 +279,10 @@ int run_location_study(const ForceArgs& args, const std::atomic<int>& signal_rec
       error(log.path().string() + ": " + *failure);
       return cmdline::kExitFailure;
     }
-    if (explore.end.why != LoopRunEnd::Why::finished) return stop_after(run, explore, log);  // marked as the signal came
+    if (explore.end.why == LoopRunEnd::Why::signal) return stop_after(run, explore, log);  // marked as the signal came
+    // Marked, so recorded, even if a fault came at the same check: the mark is the participant's.
+    faults_in_a_row = 0;
+    ++k;
   }
   std::fprintf(stderr, "vimg-force: participant %s has finished all %zu trials: %s\n", args.participant.c_str(), total,
                log.path().c_str());

@@ -28,6 +28,10 @@ Vec3 SimulatedForceDevice::hand_position_m(double time_s) const {
 
 bool SimulatedForceDevice::read(double time_s, ProbeSample& sample) {
   if (fail_read_.exchange(false)) return false;
+  if (fail_read_at_s_ >= 0.0 && time_s >= fail_read_at_s_) {
+    fail_read_at_s_ = -1.0;
+    return false;
+  }
   const double span = time_s - time_s_;
   if (span > 0.0 && !frozen_.load(std::memory_order_relaxed)) {
     const int steps = std::max(1, static_cast<int>(std::ceil(span / hand_.max_substep_s)));

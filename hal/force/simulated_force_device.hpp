@@ -46,6 +46,9 @@ class SimulatedForceDevice final : public ForceDevice {
   // Test hooks: make the next read or write fail (callable from another thread).
   void fail_next_read() { fail_read_ = true; }
   void fail_next_write() { fail_write_ = true; }
+  // Test hook: the first read at or after `time_s` (the time the reader asks for) fails, once. Set
+  // before the device is driven; deterministic on the reader's clock, whatever the wall clock does.
+  void fail_read_at(double time_s) { fail_read_at_s_ = time_s; }
   int writes() const { return writes_; }
   // Test hook: the device stops measuring (reads succeed, the sequence stays put) until resumed.
   void freeze_measurements(bool frozen) { frozen_ = frozen; }
@@ -61,6 +64,7 @@ class SimulatedForceDevice final : public ForceDevice {
   double work_J_ = 0.0;
   std::atomic<bool> fail_read_{false};
   std::atomic<bool> fail_write_{false};
+  double fail_read_at_s_ = -1.0;  // < 0: none
   std::atomic<bool> frozen_{false};
   int writes_ = 0;
   std::uint64_t sequence_ = 0;

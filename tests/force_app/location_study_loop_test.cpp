@@ -131,5 +131,29 @@ TEST(LocationStudyLoop, ADeviceFaultEndsTheTrialWithItsReason) {
   EXPECT_EQ(sim.force_N(), Vec3{});
 }
 
+TEST(LocationStudyLoop, AFaultScriptedOnTheTrialClockEndsItThereUnmarkedAndAtRest) {
+  // The simulated device's fault hook (what --sim-fault sets): the read at 0.1 s fails, on the
+  // loop's cycle clock, however the wall clock runs; the press at 0.3 s never comes.
+  const StudySet set = make_study_set(8);
+  SimulatedForceDevice sim(crossing_hand(set.layout), HandModel{}, ForceDeviceLimits{});
+  sim.fail_read_at(0.1);
+  MarkingPort port(sim, 1000.0, 0.3);
+  HapticLoop loop(port, loop_config());
+  loop.submit_scene(build_location_trial_scene(set, LocationMetaphor::transition_cue));
+  ASSERT_TRUE(loop.start());
+  std::atomic<int> no_signal{0};
+  LoopWatch watch;
+  watch.finished = [&] { return port.marked(); };
+  const LoopRunEnd end = watch_loop(loop, no_signal, watch);
+  EXPECT_EQ(end.why, LoopRunEnd::Why::fault);
+  EXPECT_EQ(end.reason("done").rfind("device fault: device read failed", 0), 0u) << end.reason("done");
+  EXPECT_FALSE(port.marked());
+  EXPECT_NEAR(port.time_s(), 0.099, 1e-12);  // the last read that went through: the cycle before 0.1 s
+  const LoggedForces f = drain(loop);
+  EXPECT_EQ(f.rows, 100u);  // 99 cycles and the fault's zero
+  EXPECT_EQ(f.last_N, Vec3{});
+  EXPECT_EQ(sim.force_N(), Vec3{});
+}
+
 }  // namespace
 }  // namespace vimg::force_app

@@ -1,22 +1,18 @@
 // vimg-force --study, the program itself on the simulated device (docs/volume.md, "Location
 // study"): the shipped example end to end (14 rows whose targets follow from the seeds, marks at the
-// hand's place at the scripted times, exact errors), SIGKILL in the middle and a rerun that continues,
-// a finished participant refused and restarted, SIGTERM and SIGINT between marks, no HID device, and
-// bad input.
+// hand's place at the scripted times, exact errors, nothing on the terminal that gives the target,
+// the error or the mark away), SIGKILL in the middle and a rerun that continues, a finished
+// participant refused and restarted, SIGTERM and SIGINT between marks, no HID device, and bad input.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 
-#include "primitives/volume/study_set.hpp"
-#include "storage/number_text.hpp"
-#include "storage/study/study_file.hpp"
-#include "storage/study/trial_table.hpp"
 #include "storage/volume/probe_path_io.hpp"
-#include "study/trial_plan.hpp"
-#include "tests/force_app/location_study_process.hpp"
+#include "tests/force_app/location_study_program.hpp"
 
 namespace vimg {
 namespace {
@@ -24,14 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace location_study_test;
 
-const fs::path kExample = fs::path(VIMG_SOURCE_DIR) / "assets" / "examples" / "location";
 constexpr double kPeriodS = 1e-3;  // the study's loop rate is 1 kHz
-
-std::vector<LocationTrial> trials_in(const fs::path& csv) {
-  const TrialTableResult<LocationTrial> table = read_location_trials(csv);
-  EXPECT_TRUE(table.ok()) << (table.diagnostics.empty() ? "" : table.diagnostics.front().to_string());
-  return table.rows;
-}
 
 // The hand's path (mm) at time t, linearly interpolated and held at its ends, as the simulator moves it.
 struct HandPath {
@@ -76,31 +65,6 @@ std::vector<double> example_marks() {
   return times;
 }
 
-std::vector<study::LocationTrialPlan> example_plan(const std::string& participant) {
-  const StudyFileResult<LocationStudy> study = load_location_study(kExample / "study.xml");
-  EXPECT_TRUE(study.ok());
-  return study.ok() ? study::plan_location_trials(*study.study, participant) : std::vector<study::LocationTrialPlan>{};
-}
-
-// Rows 1..n in order, each the plan's trial: its metaphor, its seed and the target that seed makes.
-void expect_planned(const std::vector<LocationTrial>& rows, const std::string& participant) {
-  const auto plan = example_plan(participant);
-  ASSERT_GE(plan.size(), rows.size());
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const LocationTrial& r = rows[i];
-    EXPECT_EQ(r.participant, participant);
-    EXPECT_EQ(r.trial, static_cast<int>(i + 1));
-    EXPECT_EQ(r.metaphor, plan[i].metaphor) << "trial " << i + 1;
-    EXPECT_EQ(r.seed, plan[i].data_seed) << "trial " << i + 1;
-    const StudyLayout layout = study_layout(r.seed);
-    EXPECT_EQ(r.target_x_mm, layout.bend_x_mm) << "trial " << i + 1;
-    EXPECT_EQ(r.target_z_mm, layout.plane_z_mm) << "trial " << i + 1;
-    EXPECT_EQ(r.error_mm, std::hypot(r.mark_x_mm - r.target_x_mm, r.mark_z_mm - r.target_z_mm)) << "trial " << i + 1;
-    EXPECT_EQ(r.time_utc.size(), 20u);
-    EXPECT_EQ(r.time_utc.substr(10, 1) + r.time_utc.substr(19), "TZ") << r.time_utc;
-  }
-}
-
 // "trial N of TOTAL  METAPHOR  elapsed S s", with "  marked" at the mark: nothing else.
 bool is_trial_status(std::string line, std::size_t total) {
   auto take = [&](const std::string& prefix) {
@@ -120,31 +84,38 @@ bool is_trial_status(std::string line, std::size_t total) {
   return line.empty() || line == "  marked";
 }
 
-class LocationStudyRun : public ::testing::Test {
- protected:
-  void SetUp() override {
-    root_ = fs::path(VIMG_BINARY_DIR) / "test_output" / "force_app_location" /
-            ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(root_);
-    fs::create_directories(root_ / "results");
+// Every number in the program's messages ("vimg-force: ..." lines), the files it names removed
+// first: each run of digits, signs, points and exponents that reads as a decimal.
+std::vector<double> numbers_shown(const std::string& err, const std::vector<std::string>& folders) {
+  std::vector<double> numbers;
+  std::istringstream lines(err);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("vimg-force: ", 0) != 0) continue;
+    for (const std::string& folder : folders) {
+      for (std::size_t at; (at = line.find(folder)) != std::string::npos;) {
+        const std::size_t end = line.find_first_of(" ,:", at);
+        line.erase(at, end == std::string::npos ? std::string::npos : end - at);
+      }
+    }
+    const auto in_number = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+' || c == 'e'; };
+    for (std::size_t i = 0; i < line.size();) {
+      if (!in_number(line[i])) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < line.size() && in_number(line[j])) ++j;
+      std::string token = line.substr(i, j - i);
+      while (!token.empty() && (token.back() == '.' || token.back() == '-')) token.pop_back();  // "trials." "N/ms."
+      const ParsedNumber parsed = parse_decimal(token);
+      if (const double* v = std::get_if<double>(&parsed)) numbers.push_back(*v);
+      i = j;
+    }
   }
-  fs::path results() const { return root_ / "results"; }
-  fs::path csv(const std::string& participant) const { return results() / (participant + ".location.csv"); }
-  // The example study on the simulated device, with the example's hand path and `marks`.
-  std::vector<std::string> study_args(const std::string& participant, const fs::path& marks) const {
-    return {"--study", (kExample / "study.xml").string(), "--participant", participant, "--results", results().string(),
-            "--device", "sim", "--path", (kExample / "hand_path.csv").string(), "--marks", marks.string(),
-            "--realtime-priority", "0"};
-  }
-  // A marks file for 14 trials: trials 1..fast at `fast_s`, the rest at `slow_s`.
-  fs::path marks_file(const std::string& name, std::size_t fast, double fast_s, double slow_s) const {
-    std::ofstream out(root_ / name);
-    out << "trial,time_s\n";
-    for (std::size_t k = 1; k <= 14; ++k) out << k << "," << format_decimal(k <= fast ? fast_s : slow_s) << "\n";
-    return root_ / name;
-  }
-  fs::path root_;
-};
+  return numbers;
+}
+
+class LocationStudyRun : public LocationStudyProgram {};
 
 TEST_F(LocationStudyRun, TheExampleRunsEndToEndOnTheSimulatedDevice) {
   const Exit e = run(study_args("P01", kExample / "marks.csv"), root_);
@@ -179,6 +150,20 @@ TEST_F(LocationStudyRun, TheExampleRunsEndToEndOnTheSimulatedDevice) {
       EXPECT_EQ(e.err.find(format_decimal(v)), std::string::npos) << format_decimal(v) << " shown in:\n" << e.err;
     }
   }
+  // Nor the mark, in mm or in m, in any number the program printed (the status lines are checked
+  // below to hold nothing but the trial, the metaphor and whole seconds).
+  const std::vector<double> shown = numbers_shown(e.err, {root_.string(), kExample.string()});
+  std::string leaks;
+  for (const LocationTrial& r : rows) {
+    for (double mm : {r.mark_x_mm, r.mark_y_mm, r.mark_z_mm}) {
+      for (double v : shown) {
+        if (std::abs(v - mm) <= 0.05 || std::abs(v - mm * 1e-3) <= 0.05e-3) {
+          leaks += "trial " + std::to_string(r.trial) + "'s mark " + format_decimal(mm) + " mm shown as " + format_decimal(v) + "\n";
+        }
+      }
+    }
+  }
+  EXPECT_EQ(leaks, "") << "in:\n" << e.err;
   std::istringstream lines(e.err);
   for (std::string line; std::getline(lines, line);) {
     EXPECT_TRUE(line.rfind("vimg-force: ", 0) == 0 || is_trial_status(line, 14)) << line;
