@@ -35,8 +35,9 @@ class RenderGestureEqualsNative : public ::testing::Test {
   void expect_equal(const std::string& image, const std::string& gesture, const std::string& profile) {
     test::TempDir dir("web_render");
     const auto src = test::source_dir();
+    const std::string profile_path = profile.empty() ? std::string() : (src / "assets/profiles" / profile).string();
     std::vector<std::string> profile_errors;
-    const auto options = web_site_options(profile.empty() ? std::string() : (src / "assets/profiles" / profile).string(), profile_errors);
+    const auto options = web_site_options(profile_path, profile_errors);
     ASSERT_TRUE(options) << (profile_errors.empty() ? "" : profile_errors.front());
     const auto diagnostics = update_web_image(src / "assets/examples" / image, *options, dir.path());
     ASSERT_FALSE(has_errors(diagnostics));
@@ -45,7 +46,7 @@ class RenderGestureEqualsNative : public ::testing::Test {
     std::string render = shell_quoted(std::filesystem::path(VIMG_BINARY_DIR) / "cli/vimg") + " render " +
                          shell_quoted(src / "assets/examples" / image) + " --gesture " + shell_quoted(src / "assets/gestures" / gesture) +
                          " --out " + shell_quoted(native_csv);
-    if (!profile.empty()) render += " --actuator " + shell_quoted(options.actuator_profile);
+    if (!profile.empty()) render += " --actuator " + shell_quoted(profile_path);
     ASSERT_EQ(run(render), 0) << render;
     const std::string compare = "node " + shell_quoted(src / "web/tests/render_gesture_equals_native.mjs") + " " + shell_quoted(kSite) +
                                 " " + shell_quoted(vsc) + " " + shell_quoted(src / "assets/gestures" / gesture) + " " + shell_quoted(native_csv);
