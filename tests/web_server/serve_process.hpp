@@ -17,10 +17,10 @@ namespace vimg::test {
 
 inline const std::string kVimg = VIMG_BINARY_DIR "/cli/vimg";
 
-// index.html, vimg.js, vimg.wasm and worklet.js stand-ins in `dir`.
+// index.html, vimg.js, vimg.wasm, worklet.js and the study pages: stand-ins in `dir`.
 inline void write_stand_in_assets(const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
-  for (const char* name : {"index.html", "vimg.js", "vimg.wasm", "worklet.js"}) {
+  for (const char* name : {"index.html", "vimg.js", "vimg.wasm", "worklet.js", "study.html", "study.js", "picture.js", "dashboard.html"}) {
     std::ofstream(dir / name) << "stand-in " << name << "\n";
   }
 }

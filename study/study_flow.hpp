@@ -20,7 +20,7 @@
 #include "player/touch_event.hpp"
 #include "study/trial_plan.hpp"
 
-namespace vimg::player_app {
+namespace vimg::study {
 
 enum class StudyScreen { welcome, training, rubbing, answering, pause, end };
 
@@ -44,7 +44,7 @@ class StudyFlow {
  public:
   // `images_per_set[s]`: how many pictures set s has (>= 1). `plan`: trial k is plan[k - 1].
   // `completed`: trials already recorded; the flow begins at trial completed + 1.
-  StudyFlow(std::vector<std::size_t> images_per_set, std::vector<study::MatchingTrialPlan> plan,
+  StudyFlow(std::vector<std::size_t> images_per_set, std::vector<MatchingTrialPlan> plan,
             std::size_t completed, StudyFlowOptions options, double now_s);
 
   StudyScreen screen() const { return screen_; }
@@ -91,7 +91,7 @@ class StudyFlow {
   };
 
   std::vector<std::size_t> images_per_set_;
-  std::vector<study::MatchingTrialPlan> plan_;
+  std::vector<MatchingTrialPlan> plan_;
   StudyFlowOptions options_;
   std::size_t next_ = 0;  // 0-based index of the trial under way or next
   StudyScreen screen_ = StudyScreen::welcome;
