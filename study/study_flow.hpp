@@ -1,6 +1,8 @@
 #pragma once
 // The matching test's procedure (docs/player.md, "Matching test"), apart from drawing and devices:
-// which screen is up, which trial runs, and what a trial measured. Pure: every call takes the time
+// which screen is up, which trial runs, and what a trial measured; the one state machine of
+// vimg-player and of the study page in the browser (compiled to WebAssembly,
+// web/wasm/study_exports.cpp; docs/studies.md). Pure: every call takes the time
 // (`now_s`, seconds on any monotonic clock, the same one as the touch events' time_s), so tests
 // drive it with a fake clock and the scripted mode with the gesture's own times.
 //

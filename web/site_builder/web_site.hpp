@@ -19,7 +19,7 @@ struct WebSiteOptions {
 std::filesystem::path web_assets_dir();
 inline constexpr const char* kWebAssetFiles[] = {"index.html", "vimg.js", "vimg.wasm", "worklet.js"};
 // The study's pages (vimg serve --study, docs/studies.md "In the browser"), beside those.
-inline constexpr const char* kStudyAssetFiles[] = {"dashboard.html"};
+inline constexpr const char* kStudyAssetFiles[] = {"study.html", "study.js", "picture.js", "dashboard.html"};
 
 // The name an image has in the site (images/NAME.vsc): its file stem, characters other than
 // [A-Za-z0-9_.-] replaced by '_'.
