@@ -316,6 +316,7 @@
   };
   api.study.unconfirmed = () => pending().length;
   api.study.roundTripsMs = () => roundTripsMs.slice();
+  api.audioContext = () => (audio ? audio.context : null);  // for tools: the output's context
 
   // ---- start: the wasm, the participant's state (retried until the server answers), the flow ----
   async function loadState() {
