@@ -115,3 +115,33 @@ TEST_F(StudyServer, StudyLinkPrintsTheServedAddressOrTheGivenOne) {
 
 }  // namespace
 }  // namespace vimg::test
+
+namespace vimg::test {
+namespace {
+
+// --tls: HTTPS with the given certificate (a self-signed one made here with the openssl command),
+// the study API behind it as over HTTP; plain HTTP on that port gets no answer; a certificate that
+// cannot be read stops the server with exit 1.
+TEST_F(StudyServer, TlsServesTheStudyOverHttps) {
+  const std::string cert = (dir_ / "cert.pem").string(), key = (dir_ / "key.pem").string();
+  const CommandRun made = run_command("openssl req -x509 -newkey rsa:2048 -nodes -days 2 -subj /CN=127.0.0.1 -keyout '" + key +
+                                      "' -out '" + cert + "'");
+  ASSERT_EQ(made.exit_code, 0) << made.out;
+  ServeProcess serve({"--study", kExampleStudy.string(), "--results", results().string(), "--tls", cert, key},
+                     dir_ / "assets", dir_ / "tmp");
+  const int port = serve.wait_for_port("https");
+  ASSERT_GT(port, 0) << serve.printed();
+  const std::string url = "https://127.0.0.1:" + std::to_string(port);
+  const CommandRun state = run_command("curl -sk --max-time 30 -H 'X-Vimg-Key: " + participant_key("p1") + "' '" + url +
+                                       "/api/state?participant=p1'");
+  EXPECT_NE(state.out.find("\"trials\": 40"), std::string::npos) << state.out;
+  const CommandRun wrong = run_command("curl -sk --max-time 30 -o /dev/null -w '%{http_code}' '" + url +
+                                       "/api/state?participant=p1'");
+  EXPECT_EQ(wrong.out, "403");
+  EXPECT_EQ(exchange(port, "GET", "/study.html").status, 0);  // plain HTTP: no HTTP answer
+  EXPECT_EQ(run_command(kVimg + " serve --study '" + kExampleStudy.string() + "' --results '" + results().string() +
+                        "' --port 0 --tls '" + (dir_ / "none.pem").string() + "' '" + key + "'").exit_code, 1);
+}
+
+}  // namespace
+}  // namespace vimg::test

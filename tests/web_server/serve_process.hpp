@@ -58,12 +58,14 @@ class ServeProcess {
   ServeProcess(const ServeProcess&) = delete;
   ServeProcess& operator=(const ServeProcess&) = delete;
 
-  // Reads stdout until the line with the URL; its port, or 0 if the process ended first.
-  int wait_for_port() {
+  // Reads stdout until the line with the URL (`scheme` "http" or "https"); its port, or 0 if the
+  // process ended first.
+  int wait_for_port(const std::string& scheme = "http") {
+    const std::string prefix = scheme + "://127.0.0.1:";
     while (true) {
-      const std::size_t at = out_.find("http://127.0.0.1:");
-      if (at != std::string::npos && out_.find('/', at + 17) != std::string::npos) {
-        return std::stoi(out_.substr(at + 17));
+      const std::size_t at = out_.find(prefix);
+      if (at != std::string::npos && out_.find('/', at + prefix.size()) != std::string::npos) {
+        return std::stoi(out_.substr(at + prefix.size()));
       }
       char buffer[1024];
       const ssize_t n = read(out_fd_, buffer, sizeof buffer);
