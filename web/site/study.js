@@ -156,7 +156,7 @@
         thumbs.appendChild(f);
       });
       shown = images.get(set + '/' + selected).picture;
-      drawPicture(stage, shown, pxPerMm, false);
+      drawPicture(stage, shown, pxPerMm);
       stage.hidden = false;
       play(set, selected);
     } else if (p === 'trial') {
@@ -171,7 +171,7 @@
       choices.textContent = '';
       if (rubbing) {
         shown = null;
-        drawPicture(stage, images.get(set + '/' + presented).picture, pxPerMm, true);
+        drawPicture(stage, images.get(set + '/' + presented).picture, pxPerMm, { blank: true });
         stage.hidden = false;
         play(set, presented);
       } else {
