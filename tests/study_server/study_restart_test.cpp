@@ -100,6 +100,9 @@ TEST_F(StudyServer, StudyLinkPrintsTheServedAddressOrTheGivenOne) {
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_EQ(run.out, "http://127.0.0.1:" + std::to_string(port_) + "/study.html#participant=demo&key=" +
                          participant_key("demo") + "\n");
+  // SIGTERM: exit 143, the temporary site removed (TMPDIR is the test's tmp folder).
+  EXPECT_EQ(serve_->stop_with(SIGTERM), 143);
+  EXPECT_TRUE(std::filesystem::is_empty(dir_ / "tmp"));
   run = run_command(kVimg + " study link '" + results().string() + "' --participant demo --url https://study.example.org");
   EXPECT_EQ(run.out, "https://study.example.org/study.html#participant=demo&key=" + participant_key("demo") + "\n");
   EXPECT_EQ(run_command(kVimg + " study link '" + results().string() + "' --participant 'a/b'").exit_code, 2);
