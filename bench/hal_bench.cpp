@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "realtime/clock.hpp"
 #include "hal/drv2605l_driver.hpp"
 #include "hal/drv2605l_emulator.hpp"

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "player/actuator_sink.hpp"
 #include "player/drive_sinks.hpp"
 #include "player/gesture.hpp"

@@ -12,36 +12,27 @@
 
 #include "bench/henze_traces.hpp"
 #include "bench/latency_scenario.hpp"
+#include "primitives/touch_prediction/circling_finger.hpp"
 #include "primitives/touch_prediction/prediction_protocol.hpp"
 
 namespace vimg {
 namespace {
 
-// A finger circling at 150 mm/s, 60 events a second, for one second.
-FingerHistory moving_history() {
-  FingerHistory h;
-  for (int i = 0; i <= 60; ++i) {
-    const double t = i / 60.0;
-    add_finger_event(h, t, 30.0 + 20.0 * std::cos(7.5 * t), 30.0 + 20.0 * std::sin(7.5 * t));
-  }
-  return h;
-}
-
 void BM_Predict(benchmark::State& state) {
-  const FingerHistory h = moving_history();
+  const FingerHistory h = circling_finger_history();
   const auto model = static_cast<TouchPredictionModel>(state.range(0));
   double horizon_s = 0.033;
   for (auto _ : state) {
     const PredictedPosition p = predict_finger(h, horizon_s, model);
     benchmark::DoNotOptimize(p);
-    horizon_s = horizon_s < 0.1 ? horizon_s + 1e-4 : 0.033;  // not a constant the compiler can fold
+    horizon_s = next_bench_horizon_s(horizon_s);
   }
   state.SetLabel(std::string(touch_prediction_model_name(model)));
 }
 BENCHMARK(BM_Predict)->Arg(0)->Arg(1)->Arg(2);
 
 void BM_AddEvent(benchmark::State& state) {
-  FingerHistory h = moving_history();
+  FingerHistory h = circling_finger_history();
   double t = 1.0;
   for (auto _ : state) {
     t += 1.0 / 240.0;

@@ -1,6 +1,8 @@
 // node bench/web_render_bench.mjs SITE_DIR IMAGE.vsc GESTURE.csv [REPEATS]
 // The wasm render cost per sample (renderGesture at 48 kHz, the page's path) for comparison with
-// the native `vimg render` of the same gesture (docs/benchmarks.md, "WebAssembly").
+// the native `vimg render` of the same gesture (docs/benchmarks.md, "WebAssembly"), and the cost of
+// one finger prediction per model on the workload touch_prediction_bench's BM_Predict measures
+// natively (primitives/touch_prediction/circling_finger.hpp): the median of 5 runs of 2 000 000.
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import path from 'node:path';
@@ -18,3 +20,11 @@ const t0 = process.hrtime.bigint();
 for (let i = 0; i < repeats; ++i) samples += r.renderGesture(csv, 48000).length;
 const ns = Number(process.hrtime.bigint() - t0);
 console.log(`wasm: ${samples} samples in ${(ns / 1e6).toFixed(1)} ms: ${(ns / samples).toFixed(1)} ns per sample`);
+for (const model of r.predictionModels()) {
+  const n = 2000000;
+  r.benchPredict(n / 10, model);  // warm up
+  const runs = [];
+  for (let i = 0; i < 5; ++i) runs.push(r.benchPredict(n, model));
+  runs.sort((a, b) => a - b);
+  console.log(`wasm: predict ${model}: ${((runs[2] * 1e9) / n).toFixed(1)} ns per prediction (median of 5 x ${n})`);
+}

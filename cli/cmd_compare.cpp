@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cli/command.hpp"
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "hal/rest_on_exit.hpp"
 #include "player/gesture.hpp"
 #include "storage/atomic_file.hpp"

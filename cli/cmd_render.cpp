@@ -11,7 +11,7 @@
 #include <string>
 
 #include "cli/command.hpp"
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "hal/drv2605l_trace_sink.hpp"
 #include "hal/rest_on_exit.hpp"
 #include "player/actuator_sink.hpp"

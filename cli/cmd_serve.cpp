@@ -108,8 +108,12 @@ int run_serve(const ServeArgs& a) {
       return kExitFailure;
     }
   } else {
+    std::vector<std::string> profile_errors;  // the profile is read once, for every save
+    const std::optional<WebSiteOptions> site_options = web_site_options(a.actuator, profile_errors);
+    for (const std::string& e : profile_errors) std::fprintf(stderr, "%s\n", e.c_str());
+    if (!site_options) return kExitFailure;
     images = std::make_unique<web::ServedImages>(std::vector<fs::path>(a.inputs.begin(), a.inputs.end()),
-                                                 WebSiteOptions{a.actuator}, server_options,
+                                                 *site_options, server_options,
                                                  [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
     if (!images->start()) return kExitFailure;
   }

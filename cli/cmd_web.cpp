@@ -20,7 +20,11 @@ struct WebArgs {
 
 int run_web(const WebArgs& a) {
   const std::vector<std::filesystem::path> images(a.images.begin(), a.images.end());
-  const std::vector<Diagnostic> diagnostics = build_web_site(images, WebSiteOptions{a.actuator}, a.out);
+  std::vector<std::string> profile_errors;
+  const std::optional<WebSiteOptions> options = web_site_options(a.actuator, profile_errors);
+  for (const std::string& e : profile_errors) std::fprintf(stderr, "%s\n", e.c_str());
+  if (!options) return kExitFailure;
+  const std::vector<Diagnostic> diagnostics = build_web_site(images, *options, a.out);
   for (const Diagnostic& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
   if (has_errors(diagnostics)) return kExitFailure;
   std::printf("%s: a site of %zu image%s; a browser loads it from a server: vimg serve %s\n", a.out.c_str(),

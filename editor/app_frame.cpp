@@ -183,13 +183,14 @@ void EditorApp::draw_menu_bar() {
     ImGui::Separator();
     // Touch-latency compensation (docs/latency.md): from the next start of playing mode.
     TouchCompensation& touch = playback_.touch();
-    ImGui::MenuItem("Touch Prediction", nullptr, &touch.enabled);
+    if (ImGui::MenuItem("Touch Prediction", nullptr, &touch.enabled)) save_touch_settings();
     layout_.print("menu_touch_prediction", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y,
                   ImGui::GetItemRectSize().x, ImGui::GetItemRectSize().y);
     float latency_ms = static_cast<float>(touch.panel_latency_s * 1e3);
     if (ImGui::SliderFloat("Touch latency (ms)", &latency_ms, 0.0f, static_cast<float>(kMaxTouchPanelLatency_s * 1e3), "%.1f")) {
       touch.panel_latency_s = std::clamp(static_cast<double>(latency_ms), 0.0, kMaxTouchPanelLatency_s * 1e3) * 1e-3;
     }
+    if (ImGui::IsItemDeactivatedAfterEdit()) save_touch_settings();  // once the slider is let go
     ImGui::Separator();
     const bool audition = ImGui::MenuItem("Audition on a device", nullptr, audition_.serving());
     layout_.print("menu_audition", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,

@@ -33,8 +33,16 @@ void AuditionWindow::start(const std::filesystem::path& image, const std::string
   web::WebServerOptions server_options;
   server_options.host = "0.0.0.0";
   server_options.port = 0;  // a free port: the URL says which
+  std::vector<std::string> profile_errors;
+  const std::optional<WebSiteOptions> site_options = web_site_options(actuator_profile, profile_errors);
+  if (!site_options) {
+    std::string why;
+    for (const std::string& e : profile_errors) why += (why.empty() ? "" : "; ") + e;
+    notices_.report_error("Audition on a device: the actuator profile cannot be used: " + why);
+    return;
+  }
   auto served = std::make_unique<web::ServedImages>(std::vector<std::filesystem::path>{image},
-                                                    WebSiteOptions{actuator_profile}, server_options,
+                                                    *site_options, server_options,
                                                     [this](const std::string& line) { message(line); });
   if (!served->start()) {
     const std::lock_guard lock(message_mutex_);

@@ -11,6 +11,7 @@
 #include <numeric>
 
 #include "realtime/clock.hpp"
+#include "storage/touch_settings_file.hpp"
 
 namespace vimg::editor {
 namespace {
@@ -50,6 +51,23 @@ EditorApp::EditorApp(EditorOptions options)
       compare_(layout_),
       chooser_(layout_, config_dir() / "recent-folders.txt") {
   properties_.set_feel(&playback_.feel());
+  touch_settings_path_ = config_dir() / "touch-latency.txt";
+  load_touch_settings();
+}
+
+void EditorApp::load_touch_settings() {
+  const TouchSettingsRead read = read_touch_settings(touch_settings_path_);
+  for (const Diagnostic& d : read.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  TouchCompensation& touch = playback_.touch();
+  if (read.settings.latency_ms && !options_.touch_latency_given) touch.panel_latency_s = *read.settings.latency_ms * 1e-3;
+  if (read.settings.prediction && !options_.touch_prediction_given) touch.enabled = *read.settings.prediction;
+}
+
+void EditorApp::save_touch_settings() {
+  const TouchCompensation& touch = playback_.touch();
+  if (const auto error = write_touch_settings(touch_settings_path_, touch.panel_latency_s * 1e3, touch.enabled, "vimg-editor")) {
+    notices_.report_error("The touch latency setting was not kept: " + *error);
+  }
 }
 
 EditorApp::~EditorApp() { shutdown_window(); }

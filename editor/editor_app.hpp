@@ -68,6 +68,9 @@ class EditorApp {
   void path_chosen(const std::string& path);
   void import_chosen(const std::string& path);  // asks the import options, or opens a vibroimage PNG
   void draw_import_dialog();
+  // The Mode menu's touch-latency choice, kept on this device (storage/touch_settings_file.hpp).
+  void load_touch_settings();
+  void save_touch_settings();
 
   EditorOptions options_;
   LayoutLog layout_;
@@ -81,6 +84,7 @@ class EditorApp {
   CompareWindow compare_;
   AuditionWindow audition_{notices_};
   FileChooser chooser_;
+  std::filesystem::path touch_settings_path_;
 
   SDL_Window* window_ = nullptr;
   SDL_Renderer* renderer_ = nullptr;

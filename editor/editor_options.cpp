@@ -52,13 +52,14 @@ ParsedOptions parse_editor_options(int argc, char** argv) {
                  "and the canvas marks primitives it barely renders; default: ideal");
   app.add_option("--rate", o.sample_rate_hz, "output sample rate, Hz")->check(cmdline::finite_in(kMinRenderRateHz, kMaxRenderRateHz));
   touch_latency_ms = o.touch.panel_latency_s * 1e3;
-  app.add_option("--touch-latency-ms", touch_latency_ms,
+  CLI::Option* latency_option = app.add_option("--touch-latency-ms", touch_latency_ms,
                  "the pointing device's latency in ms (decimals allowed): playing mode feels each finger this far "
-                 "ahead plus the output's own latency (docs/latency.md)")
+                 "ahead plus the output's own latency (docs/latency.md); default: the Mode menu's last choice on this device")
       ->capture_default_str()
       ->check(cmdline::finite_in(0.0, kMaxTouchPanelLatency_s * 1e3));
-  app.add_option("--touch-prediction", touch_prediction, "on (default) or off: predict each finger in playing mode")
-      ->check(CLI::IsMember({"on", "off"}));
+  CLI::Option* prediction_option =
+      app.add_option("--touch-prediction", touch_prediction, "on (default) or off: predict each finger in playing mode")
+          ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--recovery-dir", o.recovery_dir, "where autosave keeps the recovery file");
   app.add_option("--autosave-interval", o.autosave_interval_s, "seconds between autosaves of unsaved changes")
       ->check(cmdline::finite_in(0.1, 86400.0));
@@ -77,6 +78,8 @@ ParsedOptions parse_editor_options(int argc, char** argv) {
   if (!size.empty()) parse_window_size(size, o.width_px, o.height_px);
   o.touch.panel_latency_s = touch_latency_ms * 1e-3;
   o.touch.enabled = touch_prediction == "on";
+  o.touch_latency_given = latency_option->count() > 0;
+  o.touch_prediction_given = prediction_option->count() > 0;
   return ParsedOptions{o, cmdline::kExitOk};
 }
 

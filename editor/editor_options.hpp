@@ -26,7 +26,11 @@ struct EditorOptions {
   bool play_at_start = false;
   // Touch-latency compensation in playing mode (docs/latency.md): --touch-latency-ms (default the
   // mouse's, the editor's usual input), --touch-prediction; the Mode menu changes both.
+  // The Mode menu's choice is kept on this device (the config folder's touch-latency.txt,
+  // storage/touch_settings_file.hpp) and used at the next start unless the command line gives it.
   TouchCompensation touch{true, kDefaultMousePanelLatency_s, kDefaultTouchPredictionModel};
+  bool touch_latency_given = false;     // --touch-latency-ms was on the command line
+  bool touch_prediction_given = false;  // --touch-prediction was
 };
 
 struct ParsedOptions {

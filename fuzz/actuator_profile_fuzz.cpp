@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "primitives/actuator/actuator_chain.hpp"
 
 namespace {

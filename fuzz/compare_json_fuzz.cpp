@@ -12,16 +12,16 @@
 #include <vector>
 
 #include "check_messages.hpp"
-#include "study/report_json_reader.hpp"
+#include "storage/json_reader.hpp"
 #include "study/report_predicted.hpp"
 #include "study/report_writers.hpp"
 
 namespace {
 
-using vimg::study::JsonValue;
+using vimg::JsonValue;
 
 void check_value(const JsonValue& v, std::size_t depth, std::size_t& count) {
-  if (++count > vimg::study::kMaxJsonValues || depth > vimg::study::kMaxJsonDepth + 1) std::abort();
+  if (++count > vimg::kMaxJsonValues || depth > vimg::kMaxJsonDepth + 1) std::abort();
   if (v.line < 1) std::abort();
   if (v.kind == JsonValue::Kind::number && !std::isfinite(v.number)) std::abort();
   if (v.kind == JsonValue::Kind::object && v.keys.size() != v.items.size()) std::abort();
@@ -35,7 +35,7 @@ void check_value(const JsonValue& v, std::size_t depth, std::size_t& count) {
 }
 
 // A report of one set whose images are the prediction's first stems, everyone always right.
-vimg::study::StudyReport report_for(const vimg::study::PredictedConfusion& p) {
+vimg::study::StudyReport report_for(const vimg::PredictedConfusion& p) {
   vimg::study::StudyReport report;
   report.inputs = {"fuzz.csv"};
   vimg::study::MatchingReport m;
@@ -62,7 +62,7 @@ vimg::study::StudyReport report_for(const vimg::study::PredictedConfusion& p) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const vimg::study::JsonParseResult json = vimg::study::parse_json(text, "fuzz.json");
+  const vimg::JsonParseResult json = vimg::parse_json(text, "fuzz.json");
   if (json.value.has_value() == vimg::has_errors(json.diagnostics)) std::abort();  // a value iff no error
   if (json.diagnostics.size() > 1) std::abort();  // the first problem stops the reader
   vimg::fuzz::check_messages(json.diagnostics);
@@ -71,13 +71,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check_value(*json.value, 1, count);
   }
 
-  const vimg::study::PredictedLoadResult predicted = vimg::study::parse_predicted_confusion(text, "fuzz.json");
+  const vimg::PredictedLoadResult predicted = vimg::parse_predicted_confusion(text, "fuzz.json");
   if (predicted.predicted.has_value() == vimg::has_errors(predicted.diagnostics)) std::abort();
   vimg::fuzz::check_messages(predicted.diagnostics);
   if (!predicted.predicted) return 0;
-  const vimg::study::PredictedConfusion& p = *predicted.predicted;
+  const vimg::PredictedConfusion& p = *predicted.predicted;
   const std::size_t n = p.stems.size();
-  if (n == 0 || n > vimg::study::kMaxPredictedImages || p.matrix.size() != n) std::abort();
+  if (n == 0 || n > vimg::kMaxPredictedImages || p.matrix.size() != n) std::abort();
   for (const auto& row : p.matrix) {
     double sum = 0.0;
     if (row.size() != n) std::abort();
@@ -85,7 +85,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (!(x >= 0.0 && x <= 1.0)) std::abort();
       sum += x;
     }
-    if (!(std::abs(sum - 1.0) <= vimg::study::kPredictedRowSumTolerance)) std::abort();
+    if (!(std::abs(sum - 1.0) <= vimg::kPredictedRowSumTolerance)) std::abort();
   }
   for (const std::string& stem : p.stems) {
     if (stem.empty()) std::abort();
@@ -103,7 +103,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (set.predicted->correlation && !(std::abs(*set.predicted->correlation) <= 1.0)) std::abort();
   }
   const std::string out = vimg::study::report_json(report);
-  const vimg::study::JsonParseResult back = vimg::study::parse_json(out, "report.json");
+  const vimg::JsonParseResult back = vimg::parse_json(out, "report.json");
   if (!back.value) std::abort();  // the writer's JSON is JSON
   const JsonValue* sets = back.value->find("sets");
   if (!sets || sets->items.size() != 1) std::abort();

@@ -1,4 +1,4 @@
-// Fuzzes the rendered-signal readers of vimg compare (study/compare_signal.hpp): any bytes, read as
+// Fuzzes the rendered-signal readers of vimg compare (storage/signal_file.hpp): any bytes, read as
 // a WAV and as a render CSV, give a located error or samples, never a crash; samples are finite,
 // at most kMaxSignalDurationS at 8 kHz, and never none.
 #include <cmath>
@@ -8,11 +8,11 @@
 #include <string_view>
 
 #include "storage/limits.hpp"
-#include "study/compare_signal.hpp"
+#include "storage/signal_file.hpp"
 
 namespace {
 
-void check(const vimg::study::SignalReadResult& r, std::string_view file) {
+void check(const vimg::SignalReadResult& r, std::string_view file) {
   if (!r.ok()) {
     if (r.diagnostics.empty()) std::abort();  // a rejection always says why
     for (const auto& d : r.diagnostics) {
@@ -21,7 +21,7 @@ void check(const vimg::study::SignalReadResult& r, std::string_view file) {
     return;
   }
   if (r.samples->empty()) std::abort();
-  if (static_cast<double>(r.samples->size()) > vimg::kMaxSignalDurationS * vimg::study::kCompareRateHz) std::abort();
+  if (static_cast<double>(r.samples->size()) > vimg::kMaxSignalDurationS * vimg::kCompareRateHz) std::abort();
   for (const float v : *r.samples) {
     if (!std::isfinite(v)) std::abort();
   }
@@ -31,7 +31,7 @@ void check(const vimg::study::SignalReadResult& r, std::string_view file) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
-  check(vimg::study::parse_wav_signal(bytes, "fuzz.wav"), "fuzz.wav");
-  check(vimg::study::parse_csv_signal(bytes, "fuzz.csv"), "fuzz.csv");
+  check(vimg::parse_wav_signal(bytes, "fuzz.wav"), "fuzz.wav");
+  check(vimg::parse_csv_signal(bytes, "fuzz.csv"), "fuzz.csv");
   return 0;
 }

@@ -1,4 +1,4 @@
-// Fuzzes the compact compiled image reader (web/vsc/vsc_image.hpp), the one parser of the wasm
+// Fuzzes the compact compiled image reader (storage/vsc/vsc_image.hpp), the one parser of the wasm
 // renderer: any bytes give an error at a byte offset or an image that compiles into a scene and
 // writes back to the very same bytes (nothing the reader accepts is lost or invented).
 #include <cstddef>
@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "player/scene.hpp"
-#include "web/vsc/vsc_image.hpp"
+#include "storage/vsc/vsc_image.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);

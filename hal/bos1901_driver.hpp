@@ -27,7 +27,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "hal/bos1901_registers.hpp"
 #include "hal/fault_log.hpp"
 #include "hal/transfer_retry.hpp"

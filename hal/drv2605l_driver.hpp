@@ -43,7 +43,7 @@
 #include <optional>
 #include <string>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "realtime/clock.hpp"
 #include "hal/update_schedule.hpp"
 #include "hal/drv2605l_calibration.hpp"

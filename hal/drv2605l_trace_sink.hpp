@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "realtime/clock.hpp"
 #include "hal/drv2605l_driver.hpp"
 #include "hal/drv2605l_emulator.hpp"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "primitives/actuator/actuator_model.hpp"
 #include "primitives/actuator/felt_band.hpp"
 #include "primitives/actuator/primitive_frequencies.hpp"

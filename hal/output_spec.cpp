@@ -117,18 +117,14 @@ OutputParseResult parse_output_spec(std::string_view text) {
 }
 
 ActuatorProfile default_lra_profile() {
-  ActuatorProfile profile;
-  profile.name = "lra-175hz-drv2605l";
-  profile.type = ActuatorType::lra;
-  profile.resonance_hz = 175.0;
-  profile.rated_voltage_V = 1.8;
-  profile.overdrive_clamp_V = 2.5;
-  profile.min_pulse_s = 0.020;
-  profile.braking = true;
-  profile.driver = DriverChip::drv2605l;
-  profile.bus = "/dev/i2c-1";
-  profile.address = 0x5A;
-  return profile;
+  // Read once from the shipped data: the XML is the one definition of this actuator.
+  static const ProfileLoadResult shipped = load_actuator_profile(kDefaultLraProfileName);
+  if (!shipped.profile) {
+    std::string message = "the shipped profile " + std::string(kDefaultLraProfileName) + " cannot be read";
+    for (const std::string& e : shipped.errors) message += "\n" + e;
+    throw std::runtime_error(message);
+  }
+  return *shipped.profile;
 }
 
 std::string Output::calibrate() {

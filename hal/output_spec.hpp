@@ -13,7 +13,7 @@
 #include <variant>
 #include <vector>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "hal/fault_log.hpp"
 #include "player/drive_sink.hpp"
 
@@ -72,7 +72,10 @@ class Output {
 // DRV2605L). Throws DeviceError / std::runtime_error with a message naming the device.
 std::unique_ptr<Output> open_output(const OutputSpec& spec, const ActuatorProfile& profile);
 
-// The generic 175 Hz LRA of assets/profiles/lra-175hz-drv2605l.xml, for when no profile is given.
+// The generic 175 Hz LRA, for when no profile is given: the shipped assets/profiles/lra-175hz-drv2605l.xml
+// (found through storage/shipped_data.hpp, read once). Throws std::runtime_error, with the reader's
+// messages, when the shipped data cannot be found or read.
+inline constexpr const char* kDefaultLraProfileName = "lra-175hz-drv2605l";
 ActuatorProfile default_lra_profile();
 
 }  // namespace vimg

@@ -31,6 +31,7 @@ max_len_of() {
     svg_path_fuzz) echo 65536 ;;                      # path data; 2 000 segments in the fuzzer
     picture_import_fuzz) echo 16384 ;;                # small PNGs: at most 65 536 pixels in the fuzzer
     touch_trace_fuzz) echo 1100000 ;;                 # 64 MiB / 64 = 1 MiB recordings; 15 625 samples
+    touch_settings_fuzz) echo 8192 ;;                 # 4 KiB settings files
     *) echo 65536 ;;
   esac
 }

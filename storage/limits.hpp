@@ -70,7 +70,7 @@ inline constexpr double kMaxProbeCoordinateMm = 10'000.0;  // |x_mm|, |y_mm|, |z
 inline constexpr std::size_t kMaxProbeRenderRows =
     static_cast<std::size_t>(kMaxProbePathDurationS * kMaxDeviceRateHz) + 1;
 
-// --- Rendered signals compared by `vimg compare` (study/compare_signal.cpp, docs/studies.md) ----------
+// --- Rendered signals compared by `vimg compare` (storage/signal_file.cpp, docs/studies.md) ----------
 inline constexpr std::size_t kMaxSignalFileBytes = 64 * kMiB / kLimitScale;  // a WAV or render CSV given as input
 inline constexpr double kMaxSignalDurationS = 610.0;  // a render: the longest gesture and its longest ring-down
 inline constexpr std::size_t kMaxCompareInputs = 32;  // inputs of one comparison (each analysed render is held in memory)

@@ -11,6 +11,7 @@
 #include <variant>
 
 #include "primitives/image.hpp"
+#include "storage/number_range.hpp"
 
 namespace vimg {
 
@@ -64,7 +65,9 @@ bool applies_to_shape(const ParameterSpec& spec, SurfaceShape shape);
 std::string_view shape_name(SurfaceShape shape);
 std::string_view pattern_name(SurfacePattern pattern);
 
-// Numbers: whether `value` is finite and inside the range.
+// Numbers: the range (storage/number_range.hpp, the words every reader uses), and whether `value`
+// is finite and inside it.
+NumberRange number_range(const ParameterSpec& spec);
 bool in_range(const ParameterSpec& spec, double value);
 // The nearest value inside the range; `step` inside an open bound. Not finite values become the
 // default (or the bound nearest zero when the attribute is required).

@@ -11,11 +11,6 @@ namespace vimg {
 
 namespace {
 
-bool above_min(const ParameterSpec& s, double v) { return s.min_open ? v > s.min : v >= s.min; }
-bool below_max(const ParameterSpec& s, double v) { return s.max_open ? v < s.max : v <= s.max; }
-
-std::string bound(double v) { return format_decimal(v); }
-
 template <typename T>
 double* member(T& object, const NumberField& field) {
   const auto* p = std::get_if<double T::*>(&field);
@@ -53,9 +48,9 @@ std::string_view kind_word(ParameterKind kind) {
 
 }  // namespace
 
-bool in_range(const ParameterSpec& spec, double value) {
-  return std::isfinite(value) && above_min(spec, value) && below_max(spec, value);
-}
+NumberRange number_range(const ParameterSpec& spec) { return {spec.min, spec.max, spec.min_open, spec.max_open}; }
+
+bool in_range(const ParameterSpec& spec, double value) { return in_range(number_range(spec), value); }
 
 double clamp_to_range(const ParameterSpec& spec, double value) {
   const double low = spec.min_open ? spec.min + spec.step : spec.min;
@@ -68,22 +63,9 @@ double clamp_to_range(const ParameterSpec& spec, double value) {
   return std::clamp(value, low, high);
 }
 
-std::string range_text(const ParameterSpec& spec) {
-  const bool has_min = std::isfinite(spec.min);
-  const bool has_max = std::isfinite(spec.max);
-  if (!has_min && !has_max) return "finite";
-  if (!has_max) return (spec.min_open ? "> " : ">= ") + bound(spec.min);
-  if (!has_min) return (spec.max_open ? "< " : "<= ") + bound(spec.max);
-  return "in " + interval_text(spec);
-}
+std::string range_text(const ParameterSpec& spec) { return range_text(number_range(spec)); }
 
-std::string interval_text(const ParameterSpec& spec) {
-  const bool has_min = std::isfinite(spec.min);
-  const bool has_max = std::isfinite(spec.max);
-  if (!has_min && !has_max) return "any finite";
-  if (!has_min || !has_max) return range_text(spec);
-  return (spec.min_open ? "(" : "[") + bound(spec.min) + ", " + bound(spec.max) + (spec.max_open ? ")" : "]");
-}
+std::string interval_text(const ParameterSpec& spec) { return interval_text(number_range(spec)); }
 
 std::string out_of_range_message(const ParameterSpec& spec, std::string_view value_text) {
   return "<" + std::string(owner_tag(spec.owner)) + "> attribute '" + std::string(spec.name) + "' must be " +

@@ -12,7 +12,7 @@
 #include "storage/limits.hpp"
 #include "storage/parallel_tasks.hpp"
 #include "study/compare_render.hpp"
-#include "study/compare_signal.hpp"
+#include "storage/signal_file.hpp"
 
 namespace vimg::study {
 

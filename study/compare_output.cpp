@@ -7,7 +7,7 @@
 #include "storage/export/json_writer.hpp"
 #include "storage/file_extension.hpp"
 #include "storage/number_text.hpp"
-#include "study/compare_signal.hpp"
+#include "storage/signal_file.hpp"
 
 namespace vimg::study {
 

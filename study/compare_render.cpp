@@ -7,7 +7,7 @@
 #include "player/drive_sinks.hpp"
 #include "player/offline_render.hpp"
 #include "player/scene.hpp"
-#include "study/compare_signal.hpp"
+#include "storage/signal_file.hpp"
 
 namespace vimg::study {
 

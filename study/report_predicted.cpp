@@ -3,78 +3,10 @@
 #include <cmath>
 #include <map>
 
-#include "storage/read_file.hpp"
-#include "storage/study/study_file.hpp"
-#include "study/report_json_reader.hpp"
 
 namespace vimg::study {
 
 namespace {
-
-class Extractor {
- public:
-  explicit Extractor(const std::string& file_name) : list_(file_name) {}
-
-  bool fail(int line, const std::string& message) {
-    list_.error(line, message);
-    return false;
-  }
-
-  bool expect(const JsonValue& v, JsonValue::Kind kind, const std::string& what) {
-    if (v.kind == kind) return true;
-    return fail(v.line, what + " must be " + std::string(json_kind_name(kind)) + ", not " + std::string(json_kind_name(v.kind)));
-  }
-
-  bool images(const JsonValue& root, PredictedConfusion& out) {
-    const JsonValue* images = root.find("images");
-    if (!images) return fail(root.line, "no \"images\" key (the image paths of `vimg compare`)");
-    if (!expect(*images, JsonValue::Kind::array, "\"images\"")) return false;
-    if (images->items.empty()) return fail(images->line, "\"images\" is empty");
-    if (images->items.size() > kMaxPredictedImages)
-      return fail(images->line, "\"images\" names " + std::to_string(images->items.size()) + " images (limit " +
-                                    std::to_string(kMaxPredictedImages) + ")");
-    for (const JsonValue& image : images->items) {
-      if (!expect(image, JsonValue::Kind::string, "an image path")) return false;
-      const std::string stem = image.text.empty() ? std::string() : study_image_name(image.text);
-      if (stem.empty()) return fail(image.line, "an image path with no file name: \"" + escape_input(image.text) + "\"");
-      out.stems.push_back(stem);
-    }
-    return true;
-  }
-
-  bool matrix(const JsonValue& root, PredictedConfusion& out) {
-    const JsonValue* m = root.find("predicted_confusion");
-    if (!m) return fail(root.line, "no \"predicted_confusion\" key (the predicted confusion matrix of `vimg compare`)");
-    if (!expect(*m, JsonValue::Kind::array, "\"predicted_confusion\"")) return false;
-    const std::size_t n = out.stems.size();
-    if (m->items.size() != n)
-      return fail(m->line, "\"predicted_confusion\" has " + std::to_string(m->items.size()) + " rows for " + std::to_string(n) + " images");
-    for (std::size_t i = 0; i < n; ++i) {
-      const JsonValue& row = m->items[i];
-      const std::string name = "row " + std::to_string(i + 1) + " of \"predicted_confusion\"";
-      if (!expect(row, JsonValue::Kind::array, name)) return false;
-      if (row.items.size() != n)
-        return fail(row.line, name + " has " + std::to_string(row.items.size()) + " cells for " + std::to_string(n) + " images");
-      std::vector<double> cells;
-      double sum = 0.0;
-      for (const JsonValue& cell : row.items) {
-        if (!expect(cell, JsonValue::Kind::number, "a cell of " + name)) return false;
-        if (!(cell.number >= 0.0 && cell.number <= 1.0))
-          return fail(cell.line, "a cell of " + name + " is not a probability in [0, 1]");
-        cells.push_back(cell.number);
-        sum += cell.number;
-      }
-      if (std::abs(sum - 1.0) > kPredictedRowSumTolerance) return fail(row.line, name + " does not sum to 1");
-      out.matrix.push_back(std::move(cells));
-    }
-    return true;
-  }
-
-  std::vector<Diagnostic> take() { return list_.take(); }
-
- private:
-  DiagnosticList list_;
-};
 
 // Where each of the set's images sits in the prediction; none unless every one is there exactly once.
 std::optional<std::vector<std::size_t>> positions(const SetReport& set, const PredictedConfusion& p) {
@@ -123,34 +55,6 @@ std::optional<PredictedComparison> compare_with(const SetReport& set, const Pred
 }
 
 }  // namespace
-
-PredictedLoadResult parse_predicted_confusion(std::string_view json, const std::string& file_name) {
-  PredictedLoadResult result;
-  JsonParseResult parsed = parse_json(json, file_name);
-  if (!parsed.value) {
-    result.diagnostics = std::move(parsed.diagnostics);
-    return result;
-  }
-  Extractor extract(file_name);
-  PredictedConfusion p;
-  p.source = file_name;
-  const JsonValue& root = *parsed.value;
-  const bool ok = extract.expect(root, JsonValue::Kind::object, "the report of `vimg compare`") && extract.images(root, p) &&
-                  extract.matrix(root, p);
-  result.diagnostics = extract.take();
-  if (ok) result.predicted = std::move(p);
-  return result;
-}
-
-PredictedLoadResult load_predicted_confusion(const std::filesystem::path& file) {
-  const FileReadResult read = read_regular_file(file, kMaxPredictedJsonBytes);
-  if (!read.bytes) {
-    PredictedLoadResult result;
-    result.diagnostics.push_back(Diagnostic{Diagnostic::Severity::error, file.string(), 0, read.error});
-    return result;
-  }
-  return parse_predicted_confusion(*read.bytes, file.string());
-}
 
 std::vector<Diagnostic> attach_predictions(MatchingReport& report, const std::vector<PredictedConfusion>& predictions) {
   std::vector<bool> used(predictions.size(), false);

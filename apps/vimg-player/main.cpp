@@ -15,7 +15,7 @@
 #include "apps/vimg-player/status_text.hpp"
 #include "apps/vimg-player/study_session.hpp"
 #include "apps/vimg-player/touch_input.hpp"
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "hal/output_spec.hpp"
 #include "hal/rest_on_exit.hpp"
 #include "player/actuator_sink.hpp"

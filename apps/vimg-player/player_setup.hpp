@@ -10,7 +10,7 @@
 #include <string>
 
 #include "apps/vimg-player/player_args.hpp"
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "hal/output_spec.hpp"
 #include "hal/rest_on_exit.hpp"
 

@@ -16,7 +16,7 @@ struct ResponseParams {
   double spin_down_s = 0.045; // erm: time constant of the speed while it falls
 };
 
-// Ranges a profile may give (checked by the profile reader, hal/actuator_profile.cpp).
+// Ranges a profile may give (checked by the profile reader, storage/actuator_profile.cpp).
 inline constexpr double kMinResponseQ = 0.5;
 inline constexpr double kMaxResponseQ = 200.0;
 inline constexpr double kMinCornerHz = 1.0;

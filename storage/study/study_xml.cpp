@@ -1,7 +1,6 @@
 #include "storage/study/study_xml.hpp"
 
-#include <charconv>
-#include <system_error>
+#include <cstdint>
 
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
@@ -18,19 +17,6 @@ bool blank(std::string_view text) {
     if (c != ' ' && c != '\t' && c != '\n' && c != '\r') return false;
   }
   return true;
-}
-
-// Digits only: no sign, no blanks, no fraction.
-template <class T>
-std::optional<T> whole_number(std::string_view text) {
-  if (text.empty()) return std::nullopt;
-  for (const char c : text) {
-    if (c < '0' || c > '9') return std::nullopt;
-  }
-  T value{};
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || ptr != text.data() + text.size()) return std::nullopt;
-  return value;
 }
 
 }  // namespace
@@ -68,11 +54,7 @@ const XMLElement* StudyXml::root(tinyxml2::XMLDocument& doc, std::string_view xm
 }
 
 void StudyXml::check_attributes(const XMLElement* e, std::initializer_list<std::string_view> allowed) {
-  for (const tinyxml2::XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
-    bool known = false;
-    for (const auto name : allowed) known = known || name == a->Name();
-    if (!known) error(e->GetLineNum(), "unknown attribute '" + q(a->Name()) + "' on " + tag(e));
-  }
+  attributes_.check_attributes(*e, allowed);
 }
 
 void StudyXml::check_content(const XMLElement* e, bool children) {
@@ -86,53 +68,20 @@ void StudyXml::check_content(const XMLElement* e, bool children) {
 }
 
 std::optional<std::string> StudyXml::text(const XMLElement* e, const char* name, bool required) {
-  const char* v = e->Attribute(name);
-  if (!v) {
-    if (required) error(e->GetLineNum(), tag(e) + " needs attribute '" + name + "'");
-    return std::nullopt;
-  }
-  return std::string(v);
+  return attributes_.text(*e, name, required);
 }
 
 void StudyXml::number(const XMLElement* e, const char* name, double& out, double min, double max) {
-  const auto t = text(e, name, false);
-  if (!t) return;
-  const ParsedNumber parsed = parse_decimal(*t);
-  if (const auto* why = std::get_if<std::string>(&parsed)) {
-    error(e->GetLineNum(), std::string("attribute '") + name + "': '" + q(*t) + "' " + *why);
-    return;
-  }
-  const double v = std::get<double>(parsed);
-  if (!(v >= min && v <= max)) {
-    error(e->GetLineNum(), std::string("attribute '") + name + "' must be in " + format_decimal(min) + ".." +
-                               format_decimal(max) + ", got " + q(*t));
-    return;
-  }
-  out = v;
+  if (const auto v = attributes_.number(*e, name, NumberRange::closed(min, max))) out = *v;
 }
 
 void StudyXml::integer(const XMLElement* e, const char* name, int& out, int min, int max) {
-  const auto t = text(e, name, false);
-  if (!t) return;
-  const auto v = whole_number<int>(*t);
-  if (!v || *v < min || *v > max) {
-    error(e->GetLineNum(), std::string("attribute '") + name + "' must be a whole number in " + std::to_string(min) +
-                               ".." + std::to_string(max) + ", got '" + q(*t) + "'");
-    return;
-  }
-  out = *v;
+  const auto v = attributes_.whole(*e, name, static_cast<std::uint64_t>(min), static_cast<std::uint64_t>(max));
+  if (v) out = static_cast<int>(*v);
 }
 
 void StudyXml::seed(const XMLElement* e, const char* name, std::uint64_t& out) {
-  const auto t = text(e, name, false);
-  if (!t) return;
-  const auto v = whole_number<std::uint64_t>(*t);
-  if (!v) {
-    error(e->GetLineNum(), std::string("attribute '") + name + "' must be a whole number in 0..18446744073709551615, got '" +
-                               q(*t) + "'");
-    return;
-  }
-  out = *v;
+  if (const auto v = attributes_.whole(*e, name, 0, UINT64_MAX)) out = *v;
 }
 
 void StudyXml::name(const XMLElement* e, const char* attribute, std::string& out) {

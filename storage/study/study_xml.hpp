@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "storage/diagnostic.hpp"
+#include "storage/xml_attributes.hpp"
 
 namespace vimg::study_xml {
 
@@ -20,7 +21,7 @@ using tinyxml2::XMLElement;
 
 class StudyXml {
  public:
-  explicit StudyXml(DiagnosticList& list) : list_(list) {}
+  explicit StudyXml(DiagnosticList& list) : list_(list), attributes_(list) {}
 
   // Checks the size, the structure limits and the parse, then that the root is <root_name
   // version="1">; returns the root, or nullptr once the problem is reported.
@@ -29,7 +30,7 @@ class StudyXml {
   void error(int line, std::string_view message) { list_.error(line, message); }
   bool failed() const { return list_.has_errors(); }
 
-  // Every attribute of `e` must be one of `allowed`.
+  // Every attribute of `e` must be one of `allowed` (the checks are storage/xml_attributes.hpp's).
   void check_attributes(const XMLElement* e, std::initializer_list<std::string_view> allowed);
   // Text (other than blanks) in `e` is an error; so is any child element when `children` is false.
   void check_content(const XMLElement* e, bool children);
@@ -50,6 +51,7 @@ class StudyXml {
 
  private:
   DiagnosticList& list_;
+  XmlAttributes attributes_;  // the attribute checks every XML reader shares
 };
 
 }  // namespace vimg::study_xml

@@ -8,6 +8,7 @@
 #include "storage/limits.hpp"
 #include "storage/named_file.hpp"
 #include "storage/number_text.hpp"
+#include "storage/xml_attributes.hpp"
 #include "storage/xml_limits.hpp"
 #include "storage/xml_parse_problem.hpp"
 #include "storage/volume/nrrd.hpp"
@@ -21,7 +22,7 @@ using tinyxml2::XMLElement;
 
 class SceneReader {
  public:
-  explicit SceneReader(DiagnosticList& list) : list_(list) {}
+  explicit SceneReader(DiagnosticList& list) : list_(list), attributes_(list) {}
 
   std::optional<VolumeScene> run(std::string_view xml) {
     if (const auto over = check_xml_limits(xml)) {
@@ -70,42 +71,24 @@ class SceneReader {
     return std::move(scene_);
   }
 
+  // The attribute checks every XML reader shares (storage/xml_attributes.hpp).
   void check_attributes(const XMLElement* e, std::initializer_list<std::string_view> allowed) {
-    for (const XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
-      bool known = false;
-      for (auto name : allowed) known = known || name == a->Name();
-      if (!known) error(e->GetLineNum(), "unknown attribute '" + q(a->Name()) + "' on <" + q(e->Name()) + ">");
-    }
+    attributes_.check_attributes(*e, allowed);
   }
 
   std::optional<std::string> text(const XMLElement* e, const char* name, bool required) {
-    const char* v = e->Attribute(name);
-    if (!v) {
-      if (required) error(e->GetLineNum(), "<" + q(e->Name()) + "> needs attribute '" + name + "'");
-      return std::nullopt;
-    }
-    return std::string(v);
+    return attributes_.text(*e, name, required);
   }
 
   // Reads a number attribute into `out` when present; checks min (inclusive or exclusive).
   void number(const XMLElement* e, const char* name, double& out, double min, bool exclusive_min, bool required = false) {
-    const auto t = text(e, name, required);
-    if (!t) return;
-    const ParsedNumber parsed = parse_decimal(*t);
-    if (const auto* why = std::get_if<std::string>(&parsed)) {
-      error(e->GetLineNum(), std::string("attribute '") + name + "': '" + q(*t) + "' " + *why);
-      return;
+    if (const auto v = attributes_.number(*e, name, exclusive_min ? NumberRange::above(min) : NumberRange::at_least(min), required)) {
+      out = *v;
     }
-    const double v = std::get<double>(parsed);
-    if (exclusive_min ? !(v > min) : !(v >= min)) {
-      error(e->GetLineNum(), std::string("attribute '") + name + "' must be " + (exclusive_min ? "> " : ">= ") + format_decimal(min) + ", got " + q(*t));
-      return;
-    }
-    out = v;
   }
 
   void any_number(const XMLElement* e, const char* name, double& out, bool required = false) {
-    number(e, name, out, -1e300, false, required);
+    if (const auto v = attributes_.number(*e, name, NumberRange{}, required)) out = *v;
   }
 
   void vector3(const XMLElement* e, const char* name, Vec3& out, bool nonzero) {
@@ -298,6 +281,7 @@ class SceneReader {
   }
 
   DiagnosticList& list_;
+  XmlAttributes attributes_;
   VolumeScene scene_;
   int kinaesthetic_line_ = 0;
   std::vector<int> roughness_lines_;

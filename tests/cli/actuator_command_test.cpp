@@ -228,7 +228,7 @@ TEST_F(ActuatorCommand, BadSignalOrProfileIsRefused) {
                                     "render '" + image + "' --gesture g.csv --out o.wav"}) {
     const test::CommandRun r = run(command + " --actuator bad.xml");
     EXPECT_EQ(r.exit_code, 1) << command << "\n" << r.out;
-    EXPECT_NE(r.out.find("bad.xml:3: error: attribute 'q' = 0 is outside [0.5, 200]"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("bad.xml:3: error: attribute 'q' must be in [0.5, 200], got 0"), std::string::npos) << r.out;
   }
   EXPECT_FALSE(fs::exists(dir_ / "o.wav"));
 }

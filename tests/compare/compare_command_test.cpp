@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "study/report_json_reader.hpp"
+#include "storage/json_reader.hpp"
 #include "study/report_predicted.hpp"
 #include "tests/cli/run_command.hpp"
 
@@ -111,15 +111,15 @@ TEST_F(CompareCommand, TheJsonReportHasTheMatricesAndTheWarnings) {
   const auto r = vimg("compare A.vimg B.vimg " + kData + "dot.vimg --out r.json");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("vimg compare: warning: A.vimg ~ B.vimg: likely confused (p = 0.50)"), std::string::npos) << r.out;
-  const auto parsed = study::parse_json(read_text(dir_ / "r.json"), "r.json");
+  const auto parsed = parse_json(read_text(dir_ / "r.json"), "r.json");
   ASSERT_TRUE(parsed.value) << (parsed.diagnostics.empty() ? "" : parsed.diagnostics[0].to_string());
-  const study::JsonValue& root = *parsed.value;
+  const JsonValue& root = *parsed.value;
   for (const char* key : {"images", "stsim", "similarity", "predicted_confusion", "warnings", "actuator", "exploration", "model"})
     EXPECT_NE(root.find(key), nullptr) << key;
   ASSERT_EQ(root.find("images")->items.size(), 3u);
   EXPECT_EQ(root.find("images")->items[0].text, "A.vimg");
   for (const char* key : {"stsim", "similarity", "predicted_confusion"}) {
-    const study::JsonValue& m = *root.find(key);
+    const JsonValue& m = *root.find(key);
     ASSERT_EQ(m.items.size(), 3u) << key;
     for (const auto& row : m.items) ASSERT_EQ(row.items.size(), 3u) << key;
   }
@@ -133,7 +133,7 @@ TEST_F(CompareCommand, TheJsonReportHasTheMatricesAndTheWarnings) {
   EXPECT_EQ(root.find("exploration")->find("kind")->text, "standard");
   EXPECT_EQ(root.find("actuator")->find("name")->text, "ideal");
   // What `vimg study report --predicted` reads of it.
-  const study::PredictedLoadResult predicted = study::load_predicted_confusion(dir_ / "r.json");
+  const PredictedLoadResult predicted = load_predicted_confusion(dir_ / "r.json");
   ASSERT_TRUE(predicted.predicted) << (predicted.diagnostics.empty() ? "" : predicted.diagnostics[0].to_string());
   EXPECT_EQ(predicted.predicted->stems, (std::vector<std::string>{"A", "B", "dot"}));
   EXPECT_NEAR(predicted.predicted->matrix[0][1], 0.5, 1e-3);
@@ -183,9 +183,9 @@ TEST_F(CompareCommand, RenderedSignalsAreComparedAsTheyAre) {
   ASSERT_EQ(vimg(render + " --out s.csv").exit_code, 0);
   const auto r = vimg("compare s.wav s.csv " + kData + "surface.vimg --gesture g.csv --actuator " + kLra + " --out r.json");
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  const auto parsed = study::parse_json(read_text(dir_ / "r.json"), "r.json");
+  const auto parsed = parse_json(read_text(dir_ / "r.json"), "r.json");
   ASSERT_TRUE(parsed.value);
-  const study::JsonValue& stsim = *parsed.value->find("stsim");
+  const JsonValue& stsim = *parsed.value->find("stsim");
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t j = 0; j < 3; ++j) EXPECT_NEAR(stsim.items[i].items[j].number, 1.0, 1e-12) << i << "," << j;
   }

@@ -1,6 +1,6 @@
-// Rendered signals as inputs of vimg compare (study/compare_signal.hpp): what `vimg render` writes
+// Rendered signals as inputs of vimg compare (storage/signal_file.hpp): what `vimg render` writes
 // is read back exactly; another rate, more channels, a broken header or a gap in time is refused.
-#include "study/compare_signal.hpp"
+#include "storage/signal_file.hpp"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <numeric>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 
 namespace vimg::study {
 namespace {

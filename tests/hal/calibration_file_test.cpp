@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "hal/drv2605l_calibration.hpp"
 
 namespace vimg {

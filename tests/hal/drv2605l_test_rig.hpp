@@ -2,7 +2,8 @@
 // A DRV2605L driver wired to its emulator on an emulated bus, on a fake clock.
 #include <memory>
 
-#include "hal/actuator_profile.hpp"
+#include "hal/output_spec.hpp"
+#include "storage/actuator_profile.hpp"
 #include "realtime/clock.hpp"
 #include "hal/drv2605l_driver.hpp"
 #include "hal/drv2605l_emulator.hpp"
@@ -10,17 +11,11 @@
 
 namespace vimg::test {
 
+// The shipped LRA (hal/output_spec.hpp's default_lra_profile, the one definition), without the
+// pulse stretching, so that a test's pulses reach the chip as they are written.
 inline ActuatorProfile lra_profile() {
-  ActuatorProfile profile;
-  profile.name = "test-lra";
-  profile.type = ActuatorType::lra;
-  profile.resonance_hz = 175.0;
-  profile.rated_voltage_V = 1.8;
-  profile.overdrive_clamp_V = 2.5;
+  ActuatorProfile profile = default_lra_profile();
   profile.min_pulse_s = 0.0;
-  profile.braking = true;
-  profile.driver = DriverChip::drv2605l;
-  profile.address = 0x5A;
   return profile;
 }
 

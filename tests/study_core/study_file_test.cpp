@@ -99,11 +99,11 @@ TEST_F(MatchingStudyFile, EachProblemAtItsLine) {
   EXPECT_EQ(only("<matchingStudy version=\"1\" repetitions=\"2.5\">" + set + "</matchingStudy>"),
             f + ":1: error: attribute 'repetitions' must be a whole number in 1..100, got '2.5'");
   EXPECT_EQ(only("<matchingStudy version=\"1\" trainingMinutes=\"-1\">" + set + "</matchingStudy>"),
-            f + ":1: error: attribute 'trainingMinutes' must be in 0..600, got -1");
+            f + ":1: error: attribute 'trainingMinutes' must be in [0, 600], got -1");
   EXPECT_EQ(only("<matchingStudy version=\"1\" seed=\"-3\">" + set + "</matchingStudy>"),
             f + ":1: error: attribute 'seed' must be a whole number in 0..18446744073709551615, got '-3'");
   EXPECT_EQ(only("<matchingStudy version=\"1\">\n<maskingNoise device=\"x\" level=\"1.5\"/>" + set + "</matchingStudy>"),
-            f + ":2: error: attribute 'level' must be in 0..1, got 1.5");
+            f + ":2: error: attribute 'level' must be in [0, 1], got 1.5");
   EXPECT_EQ(only("<matchingStudy version=\"1\">\n<maskingNoise level=\"0.5\"/>" + set + "</matchingStudy>"),
             f + ":2: error: <maskingNoise> needs attribute 'device'");
   EXPECT_EQ(only("<matchingStudy version=\"1\"><maskingNoise device=\"x\"/>\n<maskingNoise device=\"y\"/>" + set + "</matchingStudy>"),

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "study/report_json_reader.hpp"
+#include "storage/json_reader.hpp"
 #include "study/report_predicted.hpp"
 
 namespace vimg::study {

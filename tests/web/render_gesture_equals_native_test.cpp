@@ -35,9 +35,10 @@ class RenderGestureEqualsNative : public ::testing::Test {
   void expect_equal(const std::string& image, const std::string& gesture, const std::string& profile) {
     test::TempDir dir("web_render");
     const auto src = test::source_dir();
-    WebSiteOptions options;
-    if (!profile.empty()) options.actuator_profile = (src / "assets/profiles" / profile).string();
-    const auto diagnostics = update_web_image(src / "assets/examples" / image, options, dir.path());
+    std::vector<std::string> profile_errors;
+    const auto options = web_site_options(profile.empty() ? std::string() : (src / "assets/profiles" / profile).string(), profile_errors);
+    ASSERT_TRUE(options) << (profile_errors.empty() ? "" : profile_errors.front());
+    const auto diagnostics = update_web_image(src / "assets/examples" / image, *options, dir.path());
     ASSERT_FALSE(has_errors(diagnostics));
     const auto vsc = dir.path() / "images" / (web_image_name(image) + ".vsc");
     const auto native_csv = dir.path() / "native.csv";

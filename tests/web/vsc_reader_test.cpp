@@ -6,7 +6,7 @@
 
 #include "player/scene.hpp"
 #include "tests/web/web_test_support.hpp"
-#include "web/vsc/vsc_format.hpp"
+#include "storage/vsc/vsc_format.hpp"
 
 namespace vimg {
 namespace {

@@ -1,5 +1,5 @@
 // image -> .vsc -> image: the reader builds exactly the image the writer was given (its renderable
-// part, web/vsc/vsc_image.hpp) and the actuator response, for every shipped example with every
+// part, storage/vsc/vsc_image.hpp) and the actuator response, for every shipped example with every
 // shipped profile, and for random images of every kind.
 #include <gtest/gtest.h>
 

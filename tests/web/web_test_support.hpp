@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "storage/image_io.hpp"
-#include "web/vsc/vsc_image.hpp"
+#include "storage/vsc/vsc_image.hpp"
 
 namespace vimg::test {
 

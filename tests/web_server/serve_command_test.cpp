@@ -63,6 +63,29 @@ TEST_F(ServeCommand, ASaveReachesTheOpenPageAfterItsVscIsRewritten) {
   EXPECT_NE(after, before);
 }
 
+// The profile is read once, when vimg serve starts: a save compiles with it even after the profile
+// file became unreadable (before, every save read and parsed it again, and this save failed).
+TEST_F(ServeCommand, TheActuatorProfileIsReadOnceForEverySave) {
+  fs::copy_file(fs::path(VIMG_SOURCE_DIR) / "assets/profiles/erm-10mm.xml", dir_ / "erm.xml");
+  ServeProcess serve({(dir_ / "smiley.vimg").string(), "--actuator", (dir_ / "erm.xml").string()}, dir_ / "assets", dir_ / "tmp");
+  const int port = serve.wait_for_port();
+  ASSERT_GT(port, 0) << serve.printed();
+  RawConnection page(port);
+  page.send_all("GET /events HTTP/1.1\r\nHost: localhost\r\n\r\n");
+  ASSERT_TRUE(page.read_until(": connected\n")) << page.received();
+  ASSERT_FALSE(write_file_atomically(dir_ / "erm.xml", "<actuator name=\"broken\""));  // no longer a profile
+  const std::string saved = read_all(fs::path(VIMG_SOURCE_DIR) / "assets/examples/set_a2_two_objects.vimg");
+  ASSERT_FALSE(write_file_atomically(dir_ / "smiley.vimg", saved));
+  ASSERT_TRUE(page.read_until("event: image\ndata: smiley\n\n")) << page.received();
+  // The same .vsc as `vimg web` writes for the saved image with the profile as it was at the start.
+  fs::create_directories(dir_ / "expected");
+  fs::copy_file(dir_ / "smiley.vimg", dir_ / "expected" / "smiley.vimg");
+  const CommandRun web = run_command(env() + kVimg + " web '" + (dir_ / "expected/smiley.vimg").string() +
+                                     "' --actuator erm-10mm --out '" + (dir_ / "expected/site").string() + "'");
+  ASSERT_EQ(web.exit_code, 0) << web.out;
+  EXPECT_EQ(exchange(port, "GET", "/images/smiley.vsc").body, read_all(dir_ / "expected/site/images/smiley.vsc"));
+}
+
 TEST_F(ServeCommand, SigintAndSigtermExit130And143AndRemoveTheSite) {
   for (const auto& [signal_number, code] : {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}}) {
     ServeProcess serve({(dir_ / "smiley.vimg").string()}, dir_ / "assets", dir_ / "tmp");

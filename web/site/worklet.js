@@ -1,23 +1,22 @@
 // The AudioWorklet: renders 128-frame blocks at the AudioContext's rate with the same wasm as the
 // page (vimg.wasm, instantiated here from the bytes the page posts: Emscripten's loader does not run
-// in a worklet). Pointer events are applied at the start of the next block (no buffering beyond the
-// browser's own block), each stamped with its own age. Messages in: {type:'init', wasm, vsc}, {type:'vsc', bytes},
-// {type:'event', finger, phase, x, y, pressure, id, age}, {type:'prediction', horizonS}. An event's
-// `age` is how long before the page posted it the pointer sample happened (its timeStamp); it is
-// stamped that long before the block it reaches (at most kOldestEventS: the tracker drops events
-// older than 0.1 s), as the native players stamp an event when it arrives. The page's horizon adds
-// the output's latency (docs/latency.md). Without `age`, an event is stamped with its block.
-// Out: {type:'ready'}, {type:'scope', samples,
-// contacts, eventIds, peak}, {type:'error', text} (once, when rendering throws).
+// in a worklet). Messages in: {type:'init', wasm, vsc}, {type:'vsc', bytes},
+// {type:'event', finger, phase, x, y, pressure, id, time}, {type:'prediction', horizonS}.
+// An event's `time` is the pointer sample's own time on the AudioContext's clock (the page maps its
+// timeStamp there); the renderer applies it at its sample (WebRenderer::live_event_at): inside a
+// block when it falls there, at the next block's first sample when it is already past, stamped with
+// its own time (at most WebRenderer::kOldestLiveEventS old) so the prediction knows its age. Without
+// `time`, an event applies at the next block. The page's horizon adds the output's latency
+// (docs/latency.md). Out: {type:'ready'}, {type:'scope', samples, contacts, eventIds, peak,
+// time, horizonS (the prediction horizon in use)}, {type:'error', text} (once, when rendering throws).
 'use strict';
-
-const kOldestEventS = 0.08;
 
 class VimgProcessor extends AudioWorkletProcessor {
   constructor() {
     super();
     this.exports = null;
-    this.pending = [];
+    this.pending = [];           // {id, time}: events queued in the renderer, by live time
+    this.offsetS = null;         // the context's time minus the renderer's live time
     this.scope = new Float32Array(1024);
     this.scopeAt = 0;
     this.peak = 0;
@@ -70,8 +69,12 @@ class VimgProcessor extends AudioWorkletProcessor {
       this.port.postMessage({ type: 'ready', sampleRate });
     } else if (m.type === 'vsc' && this.exports) {
       this.loadVsc(m.bytes);
-    } else if (m.type === 'event') {
-      this.pending.push(m);
+    } else if (m.type === 'event' && this.exports) {
+      const x = this.exports;
+      const offset = this.offsetS === null ? currentTime - x.vimg_live_time_s() : this.offsetS;
+      const t = typeof m.time === 'number' ? m.time - offset : x.vimg_live_time_s();
+      x.vimg_live_event_at(t, m.finger, m.phase, m.x, m.y, m.pressure);
+      if (m.id !== undefined) this.pending.push({ id: m.id, time: t });
     } else if (m.type === 'prediction' && this.exports) {
       this.exports.vimg_live_set_prediction(m.horizonS);
     }
@@ -92,15 +95,14 @@ class VimgProcessor extends AudioWorkletProcessor {
     const out = outputs[0];
     if (!this.exports || out.length === 0) return true;
     const x = this.exports;
-    const now = x.vimg_live_time_s();
-    for (const e of this.pending) {
-      const t = typeof e.age === 'number' && e.age > 0 ? now - Math.min(e.age, kOldestEventS) : now;
-      x.vimg_live_event(t, e.finger, e.phase, e.x, e.y, e.pressure);
-      if (e.id !== undefined) this.eventIds.push(e.id);
-    }
-    this.pending.length = 0;
+    this.offsetS = currentTime - x.vimg_live_time_s();
     const frames = out[0].length;
     const block = new Float32Array(this.memory.buffer, x.vimg_live_render(frames), frames);  // a byte offset
+    // The events this block applied (their time is before its end) are reported with it.
+    const end = x.vimg_live_time_s();
+    if (this.pending.length > 0) {
+      this.pending = this.pending.filter((e) => (e.time < end ? (this.eventIds.push(e.id), false) : true));
+    }
     for (const channel of out) channel.set(block);
     for (let i = 0; i < frames; ++i) {
       this.scope[this.scopeAt] = block[i];
@@ -111,7 +113,8 @@ class VimgProcessor extends AudioWorkletProcessor {
     // The first block that carries an event's effect reports it (the latency benchmark reads this).
     if (this.eventIds.length > 0 || ++this.blocks % 8 === 0) {
       this.port.postMessage({ type: 'scope', samples: this.scope.slice(), at: this.scopeAt, peak: this.peak,
-                              contacts: x.vimg_live_contacts(), eventIds: this.eventIds, time: currentTime });
+                              contacts: x.vimg_live_contacts(), eventIds: this.eventIds, time: currentTime,
+                              horizonS: x.vimg_live_prediction_horizon_s() });
       this.eventIds = [];
       this.peak = 0;
     }

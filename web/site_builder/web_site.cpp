@@ -7,11 +7,11 @@
 #include <set>
 #include <system_error>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 #include "storage/atomic_file.hpp"
 #include "storage/image_io.hpp"
 #include "storage/read_file.hpp"
-#include "web/vsc/vsc_image.hpp"
+#include "storage/vsc/vsc_image.hpp"
 
 namespace vimg {
 
@@ -25,15 +25,6 @@ Diagnostic error_of(const std::string& file, std::string message) {
   d.file = file;
   d.message = std::move(message);
   return d;
-}
-
-// The response the site plays with: the profile's, or the ideal actuator's.
-std::optional<ResponseParams> load_response(const WebSiteOptions& options, std::vector<Diagnostic>& out) {
-  if (options.actuator_profile.empty()) return ResponseParams{};
-  const ProfileLoadResult loaded = load_actuator_profile(options.actuator_profile);
-  for (const std::string& e : loaded.errors) out.push_back(error_of(options.actuator_profile, e));
-  if (!loaded.profile) return std::nullopt;
-  return loaded.profile->response;
 }
 
 bool make_dir(const std::filesystem::path& dir, std::vector<Diagnostic>& out) {
@@ -117,8 +108,6 @@ std::string web_image_name(const std::filesystem::path& image) {
 std::vector<Diagnostic> build_web_site(const std::vector<std::filesystem::path>& images, const WebSiteOptions& options,
                                        const std::filesystem::path& out_dir) {
   std::vector<Diagnostic> out;
-  const auto response = load_response(options, out);
-  if (!response) return out;
   std::vector<std::pair<std::string, std::string>> files;  // name, bytes
   if (!read_assets(kWebAssetFiles, files, out)) return out;
   std::set<std::string> names;
@@ -133,7 +122,7 @@ std::vector<Diagnostic> build_web_site(const std::vector<std::filesystem::path>&
   std::string index = "{\"images\": [";
   bool first = true;
   for (const auto& image : images) {
-    if (!write_image(image, *response, out_dir, out)) continue;
+    if (!write_image(image, options.actuator, out_dir, out)) continue;
     index += std::string(first ? "" : ", ") + json_string(web_image_name(image));
     first = false;
   }
@@ -155,9 +144,18 @@ std::vector<Diagnostic> add_study_pages(const std::filesystem::path& out_dir) {
 std::vector<Diagnostic> update_web_image(const std::filesystem::path& image, const WebSiteOptions& options,
                                          const std::filesystem::path& out_dir) {
   std::vector<Diagnostic> out;
-  const auto response = load_response(options, out);
-  if (response) write_image(image, *response, out_dir, out);
+  write_image(image, options.actuator, out_dir, out);
   return out;
+}
+
+std::optional<WebSiteOptions> web_site_options(const std::string& actuator_profile, std::vector<std::string>& errors) {
+  if (actuator_profile.empty()) return WebSiteOptions{};
+  ProfileLoadResult loaded = load_actuator_profile(actuator_profile);
+  if (!loaded.profile) {
+    for (std::string& e : loaded.errors) errors.push_back(std::move(e));
+    return std::nullopt;
+  }
+  return WebSiteOptions{loaded.profile->response};
 }
 
 }  // namespace vimg

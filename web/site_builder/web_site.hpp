@@ -1,18 +1,26 @@
 #pragma once
 // The site `vimg web` writes and `vimg serve` serves (docs/web.md): the page and the WebAssembly
-// renderer built by the `web` preset, and each image compiled to a .vsc (web/vsc/vsc_image.hpp) by
+// renderer built by the `web` preset, and each image compiled to a .vsc (storage/vsc/vsc_image.hpp) by
 // the native reader. Nothing in the site is fetched from elsewhere at run time.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "primitives/actuator/response_params.hpp"
 #include "storage/diagnostic.hpp"
 
 namespace vimg {
 
 struct WebSiteOptions {
-  std::string actuator_profile;  // a profile file (assets/profiles/*.xml); empty: the ideal actuator
+  ResponseParams actuator;  // the response the page renders for; the ideal actuator by default
 };
+
+// The options for `--actuator P` (a profile file or a shipped profile's name; empty: the ideal
+// actuator). The profile is read and parsed here, once per command: `vimg serve` compiles every
+// save with the same options. Nothing, with the reader's messages (FILE:LINE: error: ...) in
+// `errors`, when the profile cannot be used.
+std::optional<WebSiteOptions> web_site_options(const std::string& actuator_profile, std::vector<std::string>& errors);
 
 // The page's files, in the folder the web build wrote them to: VIMG_WEB_ASSETS if set, else the
 // folder CMake named (VIMG_WEB_ASSETS_DIR).

@@ -13,7 +13,8 @@ if (!nativeCsvPath) {
   process.exit(2);
 }
 const kTolerance = 1e-5;  // of full scale (a drive of 1)
-const rateHz = rateArg ? Number(rateArg) : 8000;
+// Without RATE_HZ both sides use their default rate: the wasm's is the C++ one `vimg render` uses.
+const rateHz = rateArg ? Number(rateArg) : undefined;
 
 const require = createRequire(import.meta.url);
 const createVimgModule = require(path.resolve(siteDir, 'vimg.js'));

@@ -3,8 +3,6 @@
 // Nothing here models anything: every value comes from the C++ (web/wasm/exports.cpp).
 var VimgRenderer = (function () {
   'use strict';
-  // The rate of `vimg render` when --rate is not given (cli/cmd_render.cpp).
-  var kDefaultRenderRateHz = 8000;
 
   function VimgRenderer(module) {
     this.module = module;
@@ -44,7 +42,7 @@ var VimgRenderer = (function () {
     var m = this.module;
     var bytes = new TextEncoder().encode(csvText);
     var at = this.copyIn(bytes);
-    var n = m._vimg_render_gesture(at, bytes.length, rateHz || kDefaultRenderRateHz);
+    var n = m._vimg_render_gesture(at, bytes.length, rateHz || m._vimg_default_render_rate_hz());
     m._free(at);
     if (n < 0) throw new Error(this.lastError());
     var from = m._vimg_rendered_samples() >> 2;
@@ -62,12 +60,34 @@ var VimgRenderer = (function () {
     var m = this.module;
     m._vimg_live_event(m._vimg_live_time_s(), finger, phase, xMm, yMm, pressure);
   };
+  // The same event at its time on the live stream's clock (s): the next liveRender applies it at its
+  // sample, or at its first sample when the time is already past (WebRenderer::live_event_at).
+  VimgRenderer.prototype.liveEventAt = function (timeS, finger, phase, xMm, yMm, pressure) {
+    this.module._vimg_live_event_at(timeS, finger, phase, xMm, yMm, pressure);
+  };
+  VimgRenderer.prototype.liveTimeS = function () { return this.module._vimg_live_time_s(); };
   // Touch-latency compensation (docs/latency.md): the defaults and the bound come from the C++.
   VimgRenderer.prototype.touchLatencyDefaultMs = function (pointerType) {
     return this.module._vimg_touch_latency_default_ms(pointerType === 'touch' ? 0 : 1);
   };
   VimgRenderer.prototype.touchLatencyMaxMs = function () { return this.module._vimg_touch_latency_max_ms(); };
   VimgRenderer.prototype.liveSetPrediction = function (horizonS) { this.module._vimg_live_set_prediction(horizonS); };
+  // How many fingers the live renderer follows at once (player/render_defaults.hpp).
+  VimgRenderer.prototype.maxLiveFingers = function () { return this.module._vimg_max_live_fingers(); };
+  VimgRenderer.prototype.predictionModels = function () {
+    var m = this.module, names = [];
+    for (var i = 0; i < m._vimg_prediction_model_count(); ++i) names.push(m.UTF8ToString(m._vimg_prediction_model_name(i)));
+    return names;
+  };
+  // The seconds `repeats` finger predictions take with `model` ('none', 'linear' or 'fitted'), as
+  // touch_prediction_bench's BM_Predict measures them natively (bench/web_render_bench.mjs).
+  VimgRenderer.prototype.benchPredict = function (repeats, model) {
+    var index = this.predictionModels().indexOf(model);
+    if (index < 0) throw new Error('unknown prediction model: ' + model);
+    var t0 = (typeof performance !== 'undefined' ? performance : Date).now();
+    this.module._vimg_bench_predict(repeats, index);
+    return ((typeof performance !== 'undefined' ? performance : Date).now() - t0) / 1000;
+  };
   VimgRenderer.prototype.liveRender = function (frames) {
     var at = this.module._vimg_live_render(frames) >> 2;
     return this.module.HEAPF32.subarray(at, at + frames);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <span>
 
 #include "player/actuator_sink.hpp"
@@ -79,21 +80,52 @@ void WebRenderer::live_start(double rate_hz) {
   live_samples_ = 0;
   tracker_ = LiveTracker();
   tracker_.set_prediction(live_horizon_s_);
+  queued_ = 0;
   mixer_.set_scene(scene_.get());
+}
+
+void WebRenderer::apply_live_event(TouchEvent event) {
+  event.time_s = std::max(event.time_s, live_time_s_ - kOldestLiveEventS);
+  tracker_.apply(event, live_time_s_);
+}
+
+void WebRenderer::live_event_at(const TouchEvent& event) {
+  if (!std::isfinite(event.time_s)) {
+    TouchEvent now = event;
+    now.time_s = live_time_s_;
+    apply_live_event(now);
+    return;
+  }
+  if (queued_ == kMaxQueuedLiveEvents) {
+    apply_live_event(event);
+    return;
+  }
+  std::size_t at = queued_;
+  while (at > 0 && queue_[at - 1].time_s > event.time_s) {
+    queue_[at] = queue_[at - 1];
+    --at;
+  }
+  queue_[at] = event;
+  ++queued_;
 }
 
 const std::vector<float>& WebRenderer::live_render(std::size_t frames) {
   live_block_.resize(frames);
   std::array<FingerStep, LiveTracker::kMaxFingers> steps{};
   const double dt = 1.0 / live_rate_hz_;
+  std::size_t applied = 0;
   for (std::size_t i = 0; i < frames; ++i) {
     live_time_s_ = static_cast<double>(live_samples_) * dt;
+    while (applied < queued_ && queue_[applied].time_s <= live_time_s_) apply_live_event(queue_[applied++]);
     const std::size_t n = tracker_.steps_at(live_time_s_, dt, steps);
     const double d = mixer_.step(std::span<const FingerStep>(steps.data(), n), live_time_s_, dt);
     live_block_[i] = static_cast<float>(soft_limit(d));
     ++live_samples_;
   }
   live_time_s_ = static_cast<double>(live_samples_) * dt;
+  std::copy(queue_.begin() + static_cast<std::ptrdiff_t>(applied), queue_.begin() + static_cast<std::ptrdiff_t>(queued_),
+            queue_.begin());
+  queued_ -= applied;
   return live_block_;
 }
 

@@ -19,7 +19,7 @@
 #include "storage/diagnostic.hpp"
 #include "storage/limits.hpp"
 
-namespace vimg::study {
+namespace vimg {
 
 inline constexpr std::size_t kMaxJsonDepth = 64;
 inline constexpr std::size_t kMaxJsonValues = 200'000 / kLimitScale;  // scaled down in the fuzz build
@@ -48,4 +48,4 @@ struct JsonParseResult {
 
 JsonParseResult parse_json(std::string_view text, const std::string& file_name);
 
-}  // namespace vimg::study
+}  // namespace vimg

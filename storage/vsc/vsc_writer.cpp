@@ -4,8 +4,8 @@
 #include <cstring>
 #include <variant>
 
-#include "web/vsc/vsc_format.hpp"
-#include "web/vsc/vsc_image.hpp"
+#include "storage/vsc/vsc_format.hpp"
+#include "storage/vsc/vsc_image.hpp"
 
 namespace vimg {
 

@@ -10,8 +10,8 @@
 
 #include "storage/limits.hpp"
 #include "storage/parameter_table.hpp"
-#include "web/vsc/vsc_format.hpp"
-#include "web/vsc/vsc_image.hpp"
+#include "storage/vsc/vsc_format.hpp"
+#include "storage/vsc/vsc_image.hpp"
 
 namespace vimg {
 

@@ -1,4 +1,4 @@
-#include "study/report_json_reader.hpp"
+#include "storage/json_reader.hpp"
 
 #include <charconv>
 #include <cstdint>
@@ -7,7 +7,7 @@
 #include <system_error>
 #include <tuple>
 
-namespace vimg::study {
+namespace vimg {
 
 namespace {
 
@@ -323,4 +323,4 @@ JsonParseResult parse_json(std::string_view text, const std::string& file_name) 
   return Parser(text, file_name).run();
 }
 
-}  // namespace vimg::study
+}  // namespace vimg

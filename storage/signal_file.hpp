@@ -20,7 +20,7 @@
 
 #include "storage/diagnostic.hpp"
 
-namespace vimg::study {
+namespace vimg {
 
 inline constexpr double kCompareRateHz = 8000.0;
 
@@ -37,4 +37,4 @@ SignalReadResult parse_csv_signal(std::string_view text, const std::string& file
 // Reads a `.wav` or `.csv` file, chosen by the extension.
 SignalReadResult read_signal_file(const std::filesystem::path& path);
 
-}  // namespace vimg::study
+}  // namespace vimg

@@ -1,4 +1,4 @@
-#include "study/compare_signal.hpp"
+#include "storage/signal_file.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -10,7 +10,7 @@
 #include "storage/read_file.hpp"
 #include "storage/text_trim.hpp"
 
-namespace vimg::study {
+namespace vimg {
 
 namespace {
 
@@ -164,4 +164,4 @@ SignalReadResult read_signal_file(const std::filesystem::path& path) {
   return parse_csv_signal(*read.bytes, name);
 }
 
-}  // namespace vimg::study
+}  // namespace vimg

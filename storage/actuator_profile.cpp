@@ -1,8 +1,9 @@
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 
 #include "storage/diagnostic.hpp"
 #include "storage/read_file.hpp"
 #include "storage/shipped_data.hpp"
+#include "storage/xml_attributes.hpp"
 #include "storage/xml_limits.hpp"
 #include "storage/xml_parse_problem.hpp"
 
@@ -17,51 +18,20 @@ namespace {
 
 class ProfileParser {
  public:
-  explicit ProfileParser(const std::string& file_name) : file_(file_name) {}
+  explicit ProfileParser(const std::string& file_name) : list_(file_name), attributes_(list_) {}
 
-  void error(int line, const std::string& problem) {
-    errors_.push_back(file_ + ":" + std::to_string(line) + ": error: " + problem);
-  }
+  void error(int line, const std::string& problem) { list_.error(line, problem); }
+  static std::string q(std::string_view input) { return escape_input(input); }
 
-  // A required or optional positive number attribute; records an error when malformed.
+  // A number attribute in [min_value, max_value] (storage/xml_attributes.hpp: the one grammar and
+  // wording of every XML reader); nothing when absent or malformed (reported).
   std::optional<double> number(const tinyxml2::XMLElement& element, const char* attribute, bool required,
                                double min_value, double max_value) {
-    const char* text = element.Attribute(attribute);
-    const int line = element.GetLineNum();
-    if (text == nullptr) {
-      if (required) {
-        error(line, std::string("<") + element.Name() + "> needs attribute '" + attribute + "'");
-      }
-      return std::nullopt;
-    }
-    double value = 0.0;
-    std::istringstream stream{std::string(text)};
-    stream.imbue(std::locale::classic());
-    if (!(stream >> value) || !stream.eof() || !std::isfinite(value)) {
-      error(line, std::string("attribute '") + attribute + "' is not a number: '" + text + "'");
-      return std::nullopt;
-    }
-    if (value < min_value || value > max_value) {
-      std::ostringstream range;
-      range << "attribute '" << attribute << "' = " << text << " is outside [" << min_value << ", "
-            << max_value << "]";
-      error(line, range.str());
-      return std::nullopt;
-    }
-    return value;
+    return attributes_.number(element, attribute, NumberRange::closed(min_value, max_value), required);
   }
 
   std::optional<bool> boolean(const tinyxml2::XMLElement& element, const char* attribute) {
-    const char* text = element.Attribute(attribute);
-    if (text == nullptr) {
-      return std::nullopt;
-    }
-    const std::string value = text;
-    if (value == "true" || value == "1") return true;
-    if (value == "false" || value == "0") return false;
-    error(element.GetLineNum(), std::string("attribute '") + attribute + "' must be true or false, not '" +
-                                    value + "'");
-    return std::nullopt;
+    return attributes_.boolean(element, attribute);
   }
 
   ProfileLoadResult parse(std::string_view xml) {
@@ -92,7 +62,7 @@ class ProfileParser {
     else if (type == "erm") profile.type = ActuatorType::erm;
     else if (type == "voice_coil") profile.type = ActuatorType::voice_coil;
     else if (type == "ideal") profile.type = ActuatorType::ideal;
-    else error(root->GetLineNum(), "<actuator> type must be lra, erm, voice_coil or ideal, not '" + type + "'");
+    else error(root->GetLineNum(), "<actuator> type must be lra, erm, voice_coil or ideal, not '" + q(type) + "'");
 
     for (const tinyxml2::XMLElement* child = root->FirstChildElement(); child != nullptr;
          child = child->NextSiblingElement()) {
@@ -113,7 +83,7 @@ class ProfileParser {
         if (response != nullptr) error(child->GetLineNum(), "<actuator> has more than one <response>");
         response = child;
       } else {
-        error(child->GetLineNum(), "unknown element <" + std::string(name) + "> in <actuator>");
+        error(child->GetLineNum(), "unknown element <" + q(name) + "> in <actuator>");
       }
     }
     parse_response(response, profile);
@@ -190,7 +160,7 @@ class ProfileParser {
     else if (chip == "bos1901") profile.driver = DriverChip::bos1901;
     else if (chip == "hid") profile.driver = DriverChip::hid;
     else if (chip == "none") profile.driver = DriverChip::none;
-    else error(element.GetLineNum(), "<driver> chip must be drv2605l, audio, bos1901, hid or none, not '" + chip + "'");
+    else error(element.GetLineNum(), "<driver> chip must be drv2605l, audio, bos1901, hid or none, not '" + q(chip) + "'");
     if (const char* bus = element.Attribute("bus")) profile.bus = bus;
     if (const char* address = element.Attribute("address")) {
       std::string_view text = address;
@@ -202,7 +172,7 @@ class ProfileParser {
       int value = -1;
       const auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), value, base);
       if (status != std::errc() || end != text.data() + text.size() || value < 0 || value > 0x7F) {
-        error(element.GetLineNum(), "<driver> address must be a 7-bit I2C address, not '" + std::string(address) + "'");
+        error(element.GetLineNum(), "<driver> address must be a 7-bit I2C address, not '" + q(address) + "'");
       } else {
         profile.address = value;
       }
@@ -210,7 +180,7 @@ class ProfileParser {
     for (const tinyxml2::XMLElement* pin = element.FirstChildElement(); pin != nullptr;
          pin = pin->NextSiblingElement()) {
       if (std::string_view(pin->Name()) != "pin") {
-        error(pin->GetLineNum(), "unknown element <" + std::string(pin->Name()) + "> in <driver>");
+        error(pin->GetLineNum(), "unknown element <" + q(pin->Name()) + "> in <driver>");
         continue;
       }
       const std::string role = pin->Attribute("role") != nullptr ? pin->Attribute("role") : "";
@@ -222,21 +192,21 @@ class ProfileParser {
       }
       if (role == "enable") profile.enable_pin = gpio;
       else if (role == "trigger") profile.trigger_pin = gpio;
-      else error(pin->GetLineNum(), "<pin> role must be enable or trigger, not '" + role + "'");
+      else error(pin->GetLineNum(), "<pin> role must be enable or trigger, not '" + q(role) + "'");
     }
   }
 
   ProfileLoadResult finish(std::optional<ActuatorProfile> profile) {
     ProfileLoadResult result;
-    result.errors = std::move(errors_);
+    for (const Diagnostic& d : list_.take()) result.errors.push_back(d.to_string());
     if (result.errors.empty()) {
       result.profile = std::move(profile);
     }
     return result;
   }
 
-  std::string file_;
-  std::vector<std::string> errors_;
+  DiagnosticList list_;
+  XmlAttributes attributes_;
 };
 
 }  // namespace

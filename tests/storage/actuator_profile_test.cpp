@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "hal/actuator_profile.hpp"
+#include "storage/actuator_profile.hpp"
 
 namespace vimg {
 namespace {
@@ -124,16 +124,16 @@ TEST(ActuatorProfile, BadResponseFieldsAreErrorsAtTheirLine) {
     const char* response;
     const char* expected;
   } cases[] = {
-      {"<response model=\"lra\" q=\"nan\"/>", "bad.xml:3: error: attribute 'q' is not a number: 'nan'"},
-      {"<response model=\"lra\" q=\"inf\"/>", "bad.xml:3: error: attribute 'q' is not a number: 'inf'"},
-      {"<response model=\"lra\" q=\"500\"/>", "bad.xml:3: error: attribute 'q' = 500 is outside [0.5, 200]"},
+      {"<response model=\"lra\" q=\"nan\"/>", "bad.xml:3: error: attribute 'q': 'nan' is NaN"},
+      {"<response model=\"lra\" q=\"inf\"/>", "bad.xml:3: error: attribute 'q': 'inf' is infinite"},
+      {"<response model=\"lra\" q=\"500\"/>", "bad.xml:3: error: attribute 'q' must be in [0.5, 200], got 500"},
       {"<response model=\"lra\" q=\"10\" bandwidth_hz=\"20\"/>", "bad.xml:3: error: <response> gives q or bandwidth_hz, not both"},
-      {"<response model=\"lra\" bandwidth_hz=\"0\"/>", "bad.xml:3: error: attribute 'bandwidth_hz' = 0 is outside"},
+      {"<response model=\"lra\" bandwidth_hz=\"0\"/>", "bad.xml:3: error: attribute 'bandwidth_hz' must be in [0.875, 350], got 0"},
       {"<response model=\"lra\" Q=\"10\"/>", "bad.xml:3: error: attribute 'Q' does not belong to <response model=\"lra\">"},
-      {"<response model=\"erm\" spin_up_ms=\"0\"/>", "bad.xml:3: error: attribute 'spin_up_ms' = 0 is outside [1, 2000]"},
+      {"<response model=\"erm\" spin_up_ms=\"0\"/>", "bad.xml:3: error: attribute 'spin_up_ms' must be in [1, 2000], got 0"},
       {"<response model=\"erm\" low_hz=\"50\"/>", "bad.xml:3: error: attribute 'low_hz' does not belong to <response model=\"erm\">"},
       {"<response model=\"voice_coil\" low_hz=\"600\" high_hz=\"500\"/>", "bad.xml:3: error: <response> low_hz must be below high_hz"},
-      {"<response model=\"voice_coil\" high_hz=\"1e9\"/>", "bad.xml:3: error: attribute 'high_hz' = 1e9 is outside [1, 20000]"},
+      {"<response model=\"voice_coil\" high_hz=\"1e9\"/>", "bad.xml:3: error: attribute 'high_hz' must be in [1, 20000], got 1e9"},
       {"<response model=\"piezo\"/>", "bad.xml:3: error: <response> model must be lra, erm, voice_coil or ideal, not 'piezo'"},
       {"<response/><response/>", "bad.xml:3: error: <actuator> has more than one <response>"},
   };
