@@ -1,18 +1,25 @@
 // `vimg study report TRIALS.csv... [--predicted COMPARE.json]... --out REPORT.html|.json|.md`: the
 // report of the matching test (primitives paper, section 3) and of the location study (volume
 // paper, section 5) from the trial files the study runners write (docs/studies.md).
+// `vimg study link DIR --participant ID [--url BASE]`: a participant's link to the matching test
+// in the browser (vimg serve --study; docs/studies.md, "In the browser").
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <system_error>
+#include <variant>
 #include <vector>
 
 #include "cli/command.hpp"
+#include "cli/serve_study.hpp"
 #include "storage/atomic_file.hpp"
 #include "storage/file_extension.hpp"
+#include "storage/read_file.hpp"
+#include "storage/study/trial_log.hpp"
 #include "study/report_inputs.hpp"
 #include "study/report_writers.hpp"
+#include "web/study_server/study_keys.hpp"
 
 namespace vimg::cli {
 
@@ -69,6 +76,45 @@ int run_report(const ReportArgs& a) {
   return kExitOk;
 }
 
+struct LinkArgs {
+  std::string dir;
+  std::string participant;
+  std::string url;
+};
+
+// BASE: --url, else what `vimg serve --study` recorded in DIR. "http(s)://..." ending in '/'.
+int run_link(const LinkArgs& a) {
+  const char* program = "vimg study link";
+  if (!valid_participant_id(a.participant)) {
+    return usage_error(program, "--participant '" + a.participant + "' is not 1 to 64 of A-Z a-z 0-9 _ -");
+  }
+  std::string base = a.url;
+  if (base.empty()) {
+    const std::filesystem::path recorded = std::filesystem::path(a.dir) / kServedUrlFile;
+    const FileReadResult read = read_regular_file(recorded, 4096, FinalSymlink::refuse);
+    if (!read.bytes) {
+      std::fprintf(stderr, "%s: error: %s; give the address participants reach the server at with --url "
+                           "(vimg serve --study records it here when it starts)\n",
+                   recorded.string().c_str(), read.error.c_str());
+      return kExitFailure;
+    }
+    base = *read.bytes;
+    while (!base.empty() && (base.back() == '\n' || base.back() == '\r')) base.pop_back();
+  }
+  if (base.rfind("http://", 0) != 0 && base.rfind("https://", 0) != 0) {
+    return usage_error(program, "the address must begin with http:// or https://: '" + base + "'");
+  }
+  if (base.back() != '/') base += '/';
+  auto keys = web::StudyKeys::open(a.dir);
+  if (const auto* error = std::get_if<std::string>(&keys)) {
+    std::fprintf(stderr, "%s\n", error->c_str());
+    return kExitFailure;
+  }
+  const std::string key = std::get<web::StudyKeys>(keys).participant_key(a.participant);
+  std::printf("%s\n", participant_link(base, a.participant, key).c_str());
+  return kExitOk;
+}
+
 }  // namespace
 
 void add_study_command(CLI::App& vimg, int& exit_code) {
@@ -94,6 +140,18 @@ void add_study_command(CLI::App& vimg, int& exit_code) {
       "n, mean error, SD, 99 % t interval, chance, Welch's t-test between metaphors, per-participant means. Statistics, "
       "formulas and the JSON keys: see docs/studies.md. Exit 1 on a malformed file (FILE:LINE: error), nothing written.");
   report->callback([a, &exit_code] { exit_code = run_report(*a); });
+
+  CLI::App* link = study->add_subcommand("link", "print a participant's link to the matching test in the browser (vimg serve --study)");
+  auto l = std::make_shared<LinkArgs>();
+  link->add_option("DIR", l->dir, "the results folder of vimg serve --study (it holds the study's secret)")->required()
+      ->check(CLI::ExistingDirectory);
+  link->add_option("--participant", l->participant, "the participant's ID ([A-Za-z0-9_-]{1,64})")->required();
+  link->add_option("--url", l->url,
+                   "the address participants reach the server at, e.g. https://study.example.org/ behind a reverse proxy "
+                   "(default: the one vimg serve --study recorded in DIR/vimg-serve.url)");
+  link->footer("The link carries the participant's key after '#': 128 bits derived from DIR/vimg-study.secret (made, "
+               "mode 0600, when there is none), valid across restarts. See docs/studies.md.");
+  link->callback([l, &exit_code] { exit_code = run_link(*l); });
 }
 
 }  // namespace vimg::cli

@@ -38,7 +38,7 @@ void add_web_command(CLI::App& vimg, int& exit_code) {
   CLI::App* sub = vimg.add_subcommand("web", "write a self-contained web site that plays the images in a browser");
   auto a = std::make_shared<WebArgs>();
   sub->add_option("IMAGE", a->images, "images to put in the site (.vimg, .xml or .png)")->required();
-  sub->add_option("--out", a->out, "the site's folder (index.html, vimg.js, vimg.wasm, worklet.js, images/)")->required();
+  sub->add_option("--out", a->out, "the site's folder (index.html, picture.js, vimg.js, vimg.wasm, worklet.js, images/)")->required();
   sub->add_option("--actuator", a->actuator, "actuator profile (assets/profiles/*.xml) the page renders for (default: ideal)");
   sub->footer("Nothing in the site is fetched from elsewhere at run time. Browsers do not run WebAssembly from "
               "file:// pages: serve the folder (vimg serve DIR, or any static server). See docs/web.md.");

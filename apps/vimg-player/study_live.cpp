@@ -60,16 +60,16 @@ class LiveStudy {
   }
 
  private:
-  static StudyFlowOptions options(const StudySession& session) {
-    StudyFlowOptions o;
+  static study::StudyFlowOptions options(const StudySession& session) {
+    study::StudyFlowOptions o;
     o.training_s = session.material.study.training_minutes * 60.0;
     return o;
   }
 
   // The image under the finger: the training picture, the trial's image, or none.
   std::optional<std::size_t> playing() const {
-    if (flow_.screen() == StudyScreen::training) return flow_.training_picture();
-    if (flow_.screen() == StudyScreen::rubbing) return flow_.presented();
+    if (flow_.screen() == study::StudyScreen::training) return flow_.training_picture();
+    if (flow_.screen() == study::StudyScreen::rubbing) return flow_.presented();
     return std::nullopt;
   }
 
@@ -95,21 +95,21 @@ class LiveStudy {
       const auto [x, y] = *at;
       const StudyScreenView view = session_.view(flow_, false);
       switch (flow_.screen()) {
-        case StudyScreen::welcome:
+        case study::StudyScreen::welcome:
           flow_.begin(now_s);
           return true;
-        case StudyScreen::pause:
+        case study::StudyScreen::pause:
           flow_.resume(now_s);
           return true;
-        case StudyScreen::end:
+        case study::StudyScreen::end:
           quit_ = true;
           return true;
-        case StudyScreen::answering: {
+        case study::StudyScreen::answering: {
           const std::size_t picture = picture_at(study_answer_grid(view), x, y);
           if (const auto result = flow_.choose(picture, now_s)) return session_.record(*result);
           return true;
         }
-        case StudyScreen::training: {
+        case study::StudyScreen::training: {
           const std::size_t picture = picture_at(study_thumbnails(view), x, y);
           if (picture < flow_.images_in_set()) {
             flow_.show_training_picture(picture);
@@ -117,7 +117,7 @@ class LiveStudy {
           }
           break;  // a touch on the picture
         }
-        case StudyScreen::rubbing:
+        case study::StudyScreen::rubbing:
           if (view.layout.answer_button.contains(x, y)) {
             flow_.answer(now_s);
             return true;
@@ -138,7 +138,7 @@ class LiveStudy {
 
   StudySession& session_;
   RealtimeRenderer& renderer_;
-  StudyFlow flow_;
+  study::StudyFlow flow_;
   TouchInput input_;
   const Scene* current_ = nullptr;
   PixelRect canvas_;

@@ -28,7 +28,7 @@ void print(const std::vector<Diagnostic>& diagnostics) {
 
 }  // namespace
 
-StudyScreenView StudySession::view(const StudyFlow& flow, bool scripted) const {
+StudyScreenView StudySession::view(const study::StudyFlow& flow, bool scripted) const {
   StudyScreenView v;
   v.material = &material;
   v.flow = &flow;
@@ -39,12 +39,12 @@ StudyScreenView StudySession::view(const StudyFlow& flow, bool scripted) const {
   return v;
 }
 
-void StudySession::draw(const StudyFlow& flow, bool scripted, double now_s) const {
+void StudySession::draw(const study::StudyFlow& flow, bool scripted, double now_s) const {
   draw_study_screen(renderer, pictures, text, view(flow, scripted), now_s);
   SDL_RenderPresent(renderer);
 }
 
-bool StudySession::record(const StudyTrialResult& result) const {
+bool StudySession::record(const study::StudyTrialResult& result) const {
   const MatchingTrial row = trial_row(material, args.participant, result, utc_timestamp_now());
   if (auto error = log.append(to_cells(row))) {
     std::fprintf(stderr, "vimg-player: %s: the study stops at trial %zu: %s\n", log.path().string().c_str(), result.trial,
@@ -60,9 +60,9 @@ void StudySession::report_messages() const {
   for (const auto& message : output.take_messages()) std::fprintf(stderr, "vimg-player: %s\n", message.c_str());
 }
 
-int StudySession::finish(const StudyFlow& flow) const {
+int StudySession::finish(const study::StudyFlow& flow) const {
   if (rest_requested()) return 128 + rest_signal();  // 130 for SIGINT, 143 for SIGTERM
-  if (flow.screen() != StudyScreen::end) {
+  if (flow.screen() != study::StudyScreen::end) {
     std::printf("vimg-player: stopped before trial %zu of %zu; running again continues there\n", flow.trial(),
                 flow.total_trials());
   } else {

@@ -96,18 +96,18 @@ void draw_study_screen(SDL_Renderer* renderer, StudyPictures& pictures, const St
                        const StudyScreenView& view, double now_s) {
   SDL_SetRenderDrawColor(renderer, 30, 30, 34, 255);
   SDL_RenderClear(renderer);
-  const StudyFlow& flow = *view.flow;
+  const study::StudyFlow& flow = *view.flow;
   const std::string trial_words = "Trial " + std::to_string(flow.trial()) + " of " + std::to_string(flow.total_trials());
   const std::string who = (view.scripted ? "scripted, participant " : "participant ") + view.participant;
   switch (flow.screen()) {
-    case StudyScreen::welcome:
+    case study::StudyScreen::welcome:
       header(renderer, text, view, "Matching test", who);
       message(renderer, text, view,
               {"Participant " + view.participant, "Next: trial " + std::to_string(flow.trial()) + " of " +
                                                       std::to_string(flow.total_trials()) + ", " + set_words(view),
                "Tap to begin", "Esc quits at any time; running again continues at the next trial"});
       break;
-    case StudyScreen::training: {
+    case study::StudyScreen::training: {
       header(renderer, text, view, "Training, " + set_words(view) + ": rub the picture; tap a name below for another",
              minutes_seconds(flow.training_left_s(now_s)) + " left  -  S skips");
       const std::size_t shown = flow.training_picture();
@@ -116,7 +116,7 @@ void draw_study_screen(SDL_Renderer* renderer, StudyPictures& pictures, const St
       draw_pictures(renderer, pictures, text, view, study_thumbnails(view), shown);
       break;
     }
-    case StudyScreen::rubbing: {
+    case study::StudyScreen::rubbing: {
       header(renderer, text, view, trial_words + ": rub the screen to feel the image, then press Answer", who);
       const PixelRect& b = view.layout.answer_button;
       const bool ready = flow.can_answer();
@@ -126,17 +126,17 @@ void draw_study_screen(SDL_Renderer* renderer, StudyPictures& pictures, const St
                         ready ? kText : kDim);
       break;
     }
-    case StudyScreen::answering:
+    case study::StudyScreen::answering:
       header(renderer, text, view, trial_words + ": which image did you feel? Tap it.", who);
       draw_pictures(renderer, pictures, text, view, study_answer_grid(view), flow.images_in_set());
       break;
-    case StudyScreen::pause:
+    case study::StudyScreen::pause:
       header(renderer, text, view, "Pause", who);
       message(renderer, text, view,
               {"Set " + std::to_string(flow.set()) + " of " + std::to_string(flow.set_count()) + " done",
                "Take a break. Next: " + set_words(view), "Tap to continue"});
       break;
-    case StudyScreen::end:
+    case study::StudyScreen::end:
       header(renderer, text, view, "Matching test", who);
       message(renderer, text, view,
               {"All " + std::to_string(flow.total_trials()) + " trials done. Thank you!", "Tap or press Esc to close"});

@@ -13,7 +13,7 @@
 
 #include <string>
 
-#include "apps/vimg-player/study_flow.hpp"
+#include "study/study_flow.hpp"
 #include "apps/vimg-player/study_layout.hpp"
 #include "apps/vimg-player/study_pictures.hpp"
 #include "apps/vimg-player/study_setup.hpp"
@@ -23,7 +23,7 @@ namespace vimg::player_app {
 
 struct StudyScreenView {
   const StudyMaterial* material = nullptr;
-  const StudyFlow* flow = nullptr;
+  const study::StudyFlow* flow = nullptr;
   std::string participant;
   StudyLayout layout;
   double px_per_mm = 4.0;  // true size on this screen

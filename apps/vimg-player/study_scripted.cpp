@@ -31,7 +31,7 @@ bool quit_asked() {
 }
 
 // The gesture's rows as the flow's touches, `base_s` being the gesture's start.
-void feed_touches(StudyFlow& flow, const Gesture& gesture, double base_s) {
+void feed_touches(study::StudyFlow& flow, const Gesture& gesture, double base_s) {
   const double start_s = gesture.start_time_s();
   for (const auto& stroke : gesture.strokes) {
     for (std::size_t i = 0; i < stroke.points.size(); ++i) {
@@ -50,11 +50,11 @@ void feed_touches(StudyFlow& flow, const Gesture& gesture, double base_s) {
 }  // namespace
 
 int run_scripted_study(StudySession& session, const std::vector<std::size_t>& chosen, const Gesture& gesture) {
-  StudyFlowOptions options;
+  study::StudyFlowOptions options;
   options.training_s = 0.0;
   options.welcome = false;
   constexpr double clock_s = 0.0;  // each trial's virtual clock starts here
-  StudyFlow flow(session.material.images_per_set(), session.material.plan, session.log.completed(), options, clock_s);
+  study::StudyFlow flow(session.material.images_per_set(), session.material.plan, session.log.completed(), options, clock_s);
 
   StudyStreamSink stream(session.drive);
   const double rate_hz = session.args.rate_hz;
@@ -67,8 +67,8 @@ int run_scripted_study(StudySession& session, const std::vector<std::size_t>& ch
   const double duration_s = gesture.end_time_s() - gesture.start_time_s();
 
   bool quit = false;
-  while (flow.screen() != StudyScreen::end && !rest_requested() && !quit) {
-    if (flow.screen() == StudyScreen::pause) {
+  while (flow.screen() != study::StudyScreen::end && !rest_requested() && !quit) {
+    if (flow.screen() == study::StudyScreen::pause) {
       session.draw(flow, true, clock_s);
       flow.resume(clock_s);
       continue;
@@ -86,7 +86,7 @@ int run_scripted_study(StudySession& session, const std::vector<std::size_t>& ch
     if (!result || !session.record(*result)) return cmdline::kExitFailure;
     quit = quit_asked();
   }
-  if (flow.screen() == StudyScreen::end) session.draw(flow, true, clock_s);
+  if (flow.screen() == study::StudyScreen::end) session.draw(flow, true, clock_s);
   stream.finish();  // the output at rest, its file complete
   return session.finish(flow);
 }

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "apps/vimg-player/player_args.hpp"
-#include "apps/vimg-player/study_flow.hpp"
+#include "study/study_flow.hpp"
 #include "apps/vimg-player/study_pictures.hpp"
 #include "apps/vimg-player/study_screens.hpp"
 #include "apps/vimg-player/study_setup.hpp"
@@ -36,16 +36,16 @@ struct StudySession {
   StudyText& text;
   StudyPictures& pictures;
 
-  StudyScreenView view(const StudyFlow& flow, bool scripted) const;
-  void draw(const StudyFlow& flow, bool scripted, double now_s) const;
+  StudyScreenView view(const study::StudyFlow& flow, bool scripted) const;
+  void draw(const study::StudyFlow& flow, bool scripted, double now_s) const;
   // Appends the result's row (one synced line) and prints the status line. False, with the error
   // on stderr, when it could not be written: the study stops.
-  bool record(const StudyTrialResult& result) const;
+  bool record(const study::StudyTrialResult& result) const;
   // Output faults and warnings since the last call, to stderr.
   void report_messages() const;
   // How a run that has left its loop ends: 130/143 after SIGINT/SIGTERM; else 0, with the line that
   // says where the study stopped (running again continues there) or that every trial is done.
-  int finish(const StudyFlow& flow) const;
+  int finish(const study::StudyFlow& flow) const;
 };
 
 // The live run (a person at the screen) and the scripted one (--responses, --gesture). Both return

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "storage/image_io.hpp"
+#include "study/matching_row.hpp"
 
 namespace vimg::player_app {
 
@@ -40,23 +41,12 @@ StudyMaterialResult load_study_material(const std::filesystem::path& study_file,
   return result;
 }
 
-MatchingTrial trial_row(const StudyMaterial& material, const std::string& participant, const StudyTrialResult& result,
+MatchingTrial trial_row(const StudyMaterial& material, const std::string& participant, const study::StudyTrialResult& result,
                         std::string time_utc) {
-  MatchingTrial row;
-  row.participant = participant;
-  row.set = material.set_name(result.set);
-  row.trial = static_cast<int>(result.trial);
-  row.presented = material.stems[result.set][result.presented];
-  row.chosen = material.stems[result.set][result.chosen];
-  row.correct = result.presented == result.chosen;
-  row.rub_s = result.rub_s;
-  row.response_s = result.response_s;
-  row.path_mm = result.path_mm;
-  row.time_utc = std::move(time_utc);
-  return row;
+  return study::matching_trial_row(material.study, material.stems, participant, result, std::move(time_utc));
 }
 
-std::string trial_status_line(const StudyMaterial& material, const StudyTrialResult& result) {
+std::string trial_status_line(const StudyMaterial& material, const study::StudyTrialResult& result) {
   return "vimg-player: trial " + std::to_string(result.trial) + " of " + std::to_string(material.plan.size()) +
          " (set " + material.set_name(result.set) + "): presented " + material.stems[result.set][result.presented] +
          ", chosen " + material.stems[result.set][result.chosen];

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/vimg-player/study_flow.hpp"
+#include "study/study_flow.hpp"
 #include "primitives/image.hpp"
 #include "storage/diagnostic.hpp"
 #include "storage/study/study_file.hpp"
@@ -36,11 +36,11 @@ struct StudyMaterialResult {
 StudyMaterialResult load_study_material(const std::filesystem::path& study_file, const std::string& participant);
 
 // The trial-file row of a result (correct = presented == chosen).
-MatchingTrial trial_row(const StudyMaterial& material, const std::string& participant, const StudyTrialResult& result,
+MatchingTrial trial_row(const StudyMaterial& material, const std::string& participant, const study::StudyTrialResult& result,
                         std::string time_utc);
 
 // The line printed on stdout once a trial's row is on disk (tests wait on it):
 // "vimg-player: trial 3 of 40 (set complexity): presented dot, chosen line".
-std::string trial_status_line(const StudyMaterial& material, const StudyTrialResult& result);
+std::string trial_status_line(const StudyMaterial& material, const study::StudyTrialResult& result);
 
 }  // namespace vimg::player_app

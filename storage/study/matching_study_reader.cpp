@@ -35,6 +35,8 @@ class MatchingReader {
       const std::string_view name = e->Name();
       if (name == "maskingNoise") read_masking(e);
       else if (name == "set") read_set(e);
+      else if (name == "instructions") read_text(e, study_.instructions, instructions_line_);
+      else if (name == "consent") read_text(e, study_.consent, consent_line_);
       else xml_.error(e->GetLineNum(), "unknown element " + StudyXml::tag(e) + " in <matchingStudy>");
     }
     if (study_.sets.empty() && !sets_over_limit_) {
@@ -131,6 +133,44 @@ class MatchingReader {
     set.images.push_back(read.path.lexically_normal());
   }
 
+  // <instructions> or <consent>: text only, at most once. Each line is trimmed; lines in a row
+  // join with a space and a blank line starts a new paragraph ("\n\n").
+  void read_text(const XMLElement* e, std::string& into, int& first_line) {
+    if (first_line != 0) {
+      xml_.error(e->GetLineNum(), "second " + StudyXml::tag(e) + " (first on line " + std::to_string(first_line) + ")");
+      return;
+    }
+    first_line = e->GetLineNum();
+    xml_.check_attributes(e, {});
+    std::string raw;
+    for (const tinyxml2::XMLNode* n = e->FirstChild(); n; n = n->NextSibling()) {
+      if (const tinyxml2::XMLText* t = n->ToText()) raw += t->Value();
+      else if (n->ToElement()) xml_.error(n->GetLineNum(), StudyXml::tag(e) + " holds text only, found " + StudyXml::tag(n->ToElement()));
+    }
+    std::string line;
+    bool blank_seen = false;
+    for (std::size_t at = 0; at <= raw.size(); ++at) {
+      if (at < raw.size() && raw[at] != '\n') {
+        line += raw[at];
+        continue;
+      }
+      const std::size_t first = line.find_first_not_of(" \t\r");
+      if (first == std::string::npos) {
+        blank_seen = !into.empty();
+      } else {
+        const std::string trimmed = line.substr(first, line.find_last_not_of(" \t\r") - first + 1);
+        if (!into.empty()) into += blank_seen ? "\n\n" : " ";
+        into += trimmed;
+        blank_seen = false;
+      }
+      line.clear();
+    }
+    if (into.size() > kMaxStudyTextBytes) {
+      xml_.error(first_line, StudyXml::tag(e) + " holds " + std::to_string(into.size()) + " bytes, more than " +
+                                 std::to_string(kMaxStudyTextBytes) + " (limit " + std::to_string(kMaxStudyTextBytes) + ")");
+    }
+  }
+
   void check_total(const XMLElement* root) {
     std::size_t total = 0;
     for (const auto& set : study_.sets) total += set.images.size() * static_cast<std::size_t>(study_.repetitions);
@@ -145,6 +185,8 @@ class MatchingReader {
   NamedFileOptions named_;
   MatchingStudy study_;
   int masking_line_ = 0;
+  int instructions_line_ = 0;
+  int consent_line_ = 0;
   bool sets_over_limit_ = false;
   std::map<std::string, int> set_lines_;
 };

@@ -6,6 +6,7 @@
 // study must run exactly as its file says.
 //
 //   <matchingStudy version="1" seed="2024" repetitions="5" trainingMinutes="3">
+//     <instructions>Rub the screen, then ...</instructions> <consent>Your answers are ...</consent>
 //     <maskingNoise device="USB Audio" level="0.2"/>
 //     <set name="complexity"> <image file="dot.vimg"/> <image file="line.vimg"/> </set>
 //   </matchingStudy>
@@ -13,6 +14,7 @@
 //   <locationStudy version="1" seed="7" trialsPerMetaphor="7" order="blocked">
 //     <metaphor name="roughness"/> <metaphor name="transitionCue"/>
 //   </locationStudy>
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -33,6 +35,9 @@ struct StudyImageSet {
   std::vector<std::filesystem::path> images;
 };
 
+// A study's instructions or consent text at most (storage/limits.hpp has the other study limits).
+inline constexpr std::size_t kMaxStudyTextBytes = 16384;
+
 // White noise on an audio device that is not the actuator, to hide the actuator's sound.
 struct MaskingNoise {
   std::string audio_device;
@@ -44,6 +49,9 @@ struct MatchingStudy {
   int repetitions = 5;  // per image and set, >= 1
   double training_minutes = 3.0;  // >= 0; 0 skips training
   std::optional<MaskingNoise> masking_noise;
+  // What the participant reads first (the study page shows both; empty: its own words).
+  std::string instructions;
+  std::string consent;
   std::vector<StudyImageSet> sets;  // >= 1 set, each >= 2 images, stems unique within a set
 };
 

@@ -117,6 +117,29 @@ TEST_F(MatchingStudyFile, EachProblemAtItsLine) {
   EXPECT_EQ(only("<matchingStudy>" + set + "</matchingStudy>"), f + ":1: error: <matchingStudy> needs attribute 'version' (\"1\")");
 }
 
+TEST_F(MatchingStudyFile, InstructionsAndConsentAreTextInParagraphs) {
+  const std::string set = "<set name=\"s\"><image file=\"a.vimg\"/><image file=\"b.vimg\"/></set>";
+  auto r = load("<matchingStudy version=\"1\">\n  <instructions>\n    Rub the screen,\n    then press Answer.\n\n"
+                "    Take  your time &amp; breathe.\n  </instructions>\n  <consent>I agree.</consent>" + set + "</matchingStudy>");
+  ASSERT_TRUE(r.ok()) << messages(r);
+  EXPECT_EQ(r.study->instructions, "Rub the screen, then press Answer.\n\nTake  your time & breathe.");
+  EXPECT_EQ(r.study->consent, "I agree.");
+  r = load("<matchingStudy version=\"1\">" + set + "</matchingStudy>");
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r.study->instructions, "");
+  EXPECT_EQ(r.study->consent, "");
+  const std::string f = file();
+  EXPECT_EQ(only("<matchingStudy version=\"1\"><consent>a</consent>\n<consent>b</consent>" + set + "</matchingStudy>"),
+            f + ":2: error: second <consent> (first on line 1)");
+  EXPECT_EQ(only("<matchingStudy version=\"1\"><instructions>a\n<b>bold</b></instructions>" + set + "</matchingStudy>"),
+            f + ":2: error: <instructions> holds text only, found <b>");
+  EXPECT_EQ(only("<matchingStudy version=\"1\"><consent lang=\"en\">a</consent>" + set + "</matchingStudy>"),
+            f + ":1: error: unknown attribute 'lang' on <consent>");
+  EXPECT_EQ(only("<matchingStudy version=\"1\"><consent>" + std::string(kMaxStudyTextBytes + 1, 'x') + "</consent>" + set +
+                 "</matchingStudy>"),
+            f + ":1: error: <consent> holds 16385 bytes, more than 16384 (limit 16384)");
+}
+
 TEST_F(MatchingStudyFile, UnknownElementsAndAttributesAreNamed) {
   const std::string f = file();
   EXPECT_EQ(only("<matchingStudy version=\"1\" colour=\"red\"><set name=\"s\"><image file=\"a.vimg\"/><image file=\"b.vimg\"/></set></matchingStudy>"),

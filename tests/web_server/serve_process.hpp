@@ -17,10 +17,10 @@ namespace vimg::test {
 
 inline const std::string kVimg = VIMG_BINARY_DIR "/cli/vimg";
 
-// index.html, vimg.js, vimg.wasm and worklet.js stand-ins in `dir`.
+// index.html, vimg.js, vimg.wasm, worklet.js and the study pages: stand-ins in `dir`.
 inline void write_stand_in_assets(const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
-  for (const char* name : {"index.html", "vimg.js", "vimg.wasm", "worklet.js"}) {
+  for (const char* name : {"index.html", "vimg.js", "vimg.wasm", "worklet.js", "study.html", "study.js", "picture.js", "dashboard.html"}) {
     std::ofstream(dir / name) << "stand-in " << name << "\n";
   }
 }
@@ -58,12 +58,14 @@ class ServeProcess {
   ServeProcess(const ServeProcess&) = delete;
   ServeProcess& operator=(const ServeProcess&) = delete;
 
-  // Reads stdout until the line with the URL; its port, or 0 if the process ended first.
-  int wait_for_port() {
+  // Reads stdout until the line with the URL (`scheme` "http" or "https"); its port, or 0 if the
+  // process ended first.
+  int wait_for_port(const std::string& scheme = "http") {
+    const std::string prefix = scheme + "://127.0.0.1:";
     while (true) {
-      const std::size_t at = out_.find("http://127.0.0.1:");
-      if (at != std::string::npos && out_.find('/', at + 17) != std::string::npos) {
-        return std::stoi(out_.substr(at + 17));
+      const std::size_t at = out_.find(prefix);
+      if (at != std::string::npos && out_.find('/', at + prefix.size()) != std::string::npos) {
+        return std::stoi(out_.substr(at + prefix.size()));
       }
       char buffer[1024];
       const ssize_t n = read(out_fd_, buffer, sizeof buffer);

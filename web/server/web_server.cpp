@@ -3,6 +3,7 @@
 #include <httplib.h>
 
 #include <atomic>
+#include <utility>
 #include <cstdio>
 #include <thread>
 
@@ -47,14 +48,55 @@ void set_text(httplib::Response& res, int status, const std::string& text) {
 }  // namespace
 
 struct WebServer::Impl {
+  explicit Impl(WebServerOptions o) : options(std::move(o)) {}
   WebServerOptions options;
   fs::path site_root;  // canonical
-  httplib::Server server;
+  std::unique_ptr<httplib::Server> server_owned;  // an SSLServer with TLS
+  httplib::Server& server = make_server();
   EventBroadcaster events;
   std::thread listener;
   std::atomic<bool> running{false};
   std::atomic<bool> listen_ended{false};
   int port = 0;
+
+  httplib::Server& make_server() {
+    if (options.tls_cert_pem.empty() && options.tls_key_pem.empty()) {
+      server_owned = std::make_unique<httplib::Server>();
+    } else {
+      server_owned = std::make_unique<httplib::SSLServer>(options.tls_cert_pem.c_str(), options.tls_key_pem.c_str());
+    }
+    return *server_owned;
+  }
+
+  // The TLS certificate and key could not be read (start() says so).
+  bool tls_invalid() const {
+    if (options.tls_cert_pem.empty() && options.tls_key_pem.empty()) return false;
+    return !static_cast<const httplib::SSLServer&>(*server_owned).is_valid();
+  }
+
+  bool api_post_path(const std::string& path) const {
+    if (!options.api) return false;
+    for (const std::string& p : options.api_post_paths) {
+      if (p == path) return true;
+    }
+    return false;
+  }
+
+  void serve_api(const httplib::Request& req, httplib::Response& res) const {
+    ApiRequest request;
+    request.method = req.method;
+    request.path = req.path;
+    const std::size_t question = req.target.find('?');
+    if (question != std::string::npos) request.query = req.target.substr(question + 1);
+    request.host = req.get_header_value("Host");
+    request.origin = req.get_header_value("Origin");
+    request.key = req.get_header_value("X-Vimg-Key");
+    request.content_type = req.get_header_value("Content-Type");
+    request.body = req.body;
+    const ApiReply reply = options.api(request);
+    res.status = reply.status;
+    res.set_content(reply.body, reply.content_type);
+  }
 
   void log(const std::string& line) const {
     if (options.log_line) {
@@ -111,8 +153,9 @@ struct WebServer::Impl {
     server.set_payload_max_length(kMaxRequestBodyBytes);
     server.set_keep_alive_timeout(1);  // an idle connection holds a worker; stop() waits for it
     server.set_default_headers({{"Cache-Control", "no-store"}, {"X-Content-Type-Options", "nosniff"}});
-    server.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+    server.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
       if (req.method == "GET" || req.method == "HEAD") return httplib::Server::HandlerResponse::Unhandled;
+      if (req.method == "POST" && api_post_path(req.path)) return httplib::Server::HandlerResponse::Unhandled;
       set_text(res, 405, "method not allowed: this server is read-only (GET and HEAD)");
       res.set_header("Allow", "GET, HEAD");
       res.set_header("Connection", "close");  // a body, if any, is never read
@@ -121,10 +164,13 @@ struct WebServer::Impl {
     server.Get("[\\s\\S]*", [this](const httplib::Request& req, httplib::Response& res) {
       if (req.path == "/events") {
         serve_events(req, res);
+      } else if (options.api && req.path.rfind("/api/", 0) == 0) {
+        serve_api(req, res);
       } else {
         serve_file(req, res);
       }
     });
+    server.Post("[\\s\\S]*", [this](const httplib::Request& req, httplib::Response& res) { serve_api(req, res); });
     server.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
       const std::size_t bytes = req.method == "HEAD" ? 0 : res.body.size();
       log(loggable(req.method) + " " + loggable(req.path.empty() ? req.target : req.path) + " " +
@@ -133,8 +179,7 @@ struct WebServer::Impl {
   }
 };
 
-WebServer::WebServer(WebServerOptions options) : impl_(std::make_unique<Impl>()) {
-  impl_->options = std::move(options);
+WebServer::WebServer(WebServerOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
   impl_->configure();
 }
 
@@ -146,6 +191,10 @@ std::optional<std::string> WebServer::start() {
   std::error_code ec;
   s.site_root = fs::canonical(s.options.site_dir, ec);
   if (ec || !fs::is_directory(s.site_root)) return s.options.site_dir.string() + ": not a folder that can be served";
+  if (s.tls_invalid()) {
+    return s.options.tls_cert_pem.string() + ", " + s.options.tls_key_pem.string() +
+           ": cannot be read as a PEM certificate and its private key";
+  }
   if (s.options.port == 0) {
     s.port = s.server.bind_to_any_port(s.options.host);
   } else {

@@ -10,7 +10,11 @@
 //   - every response says Cache-Control: no-store (a page always fetches the latest save) and
 //     X-Content-Type-Options: nosniff; the Content-Type comes from web/server/content_type.hpp;
 //   - /events is the Server-Sent Events stream of the images' changes (web/server/event_stream.hpp);
-//   - one log line per request: "METHOD PATH STATUS BYTES" (control characters escaped).
+//   - one log line per request: "METHOD PATH STATUS BYTES" (control characters escaped; the query
+//     is never logged);
+//   - with an `api` (vimg serve --study, web/study_server/), GET of /api/... and POST of the paths
+//     in `api_post_paths` go to it instead; every other POST is refused as above;
+//   - with `tls_cert_pem` and `tls_key_pem`, HTTPS (a secure context on a LAN).
 // The server runs on threads of its own between start() and stop() (or the destructor).
 #include <cstddef>
 #include <filesystem>
@@ -18,6 +22,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace vimg::web {
 
@@ -25,12 +30,33 @@ inline constexpr std::size_t kMaxRequestBodyBytes = 4096;
 inline constexpr std::size_t kMaxServedFileBytes = std::size_t{64} << 20;
 inline constexpr int kServerWorkerThreads = 24;
 
+// A request to the API, without the library's types: what web/study_server/ needs of it.
+struct ApiRequest {
+  std::string method;  // GET, HEAD or POST
+  std::string path;    // decoded, as routed
+  std::string query;   // the raw text after '?', empty without one
+  std::string host;    // the Host header
+  std::string origin;  // the Origin header, empty without one
+  std::string key;     // the X-Vimg-Key header, empty without one
+  std::string content_type;
+  std::string body;
+};
+struct ApiReply {
+  int status = 200;
+  std::string content_type = "text/plain; charset=utf-8";
+  std::string body;
+};
+using ApiHandler = std::function<ApiReply(const ApiRequest&)>;
+
 struct WebServerOptions {
   std::filesystem::path site_dir;
   std::string host = "127.0.0.1";  // "0.0.0.0" for the LAN (vimg serve --lan)
   int port = 0;                    // 0: any free port (port() says which)
   // Receives each log line (without its newline); by default they go to stderr.
   std::function<void(const std::string&)> log_line;
+  ApiHandler api;                           // empty: no /api/ (plain vimg serve)
+  std::vector<std::string> api_post_paths;  // the only paths a POST may reach
+  std::filesystem::path tls_cert_pem, tls_key_pem;  // both empty: plain HTTP
 };
 
 class WebServer {

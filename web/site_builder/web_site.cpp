@@ -42,6 +42,23 @@ bool write_or_report(const std::filesystem::path& path, std::string_view bytes, 
   return true;
 }
 
+// The page's files named by `names`, read from web_assets_dir(); false (reported) when one is missing.
+template <class Names>
+bool read_assets(const Names& names, std::vector<std::pair<std::string, std::string>>& files, std::vector<Diagnostic>& out) {
+  const std::filesystem::path assets = web_assets_dir();
+  for (const char* name : names) {
+    FileReadResult read = read_regular_file(assets / name, kMaxAssetBytes);
+    if (!read.bytes) {
+      out.push_back(error_of((assets / name).string(),
+                             read.error + "; build the page with `cmake --preset web && cmake --build --preset web` "
+                                          "(or set VIMG_WEB_ASSETS to the folder holding " + name + ")"));
+      return false;
+    }
+    files.emplace_back(name, std::move(*read.bytes));
+  }
+  return true;
+}
+
 // Compiles one image into DIR/images/NAME.vsc; false after adding the diagnostics.
 bool write_image(const std::filesystem::path& image, const ResponseParams& response, const std::filesystem::path& out_dir,
                  std::vector<Diagnostic>& out) {
@@ -91,18 +108,8 @@ std::string web_image_name(const std::filesystem::path& image) {
 std::vector<Diagnostic> build_web_site(const std::vector<std::filesystem::path>& images, const WebSiteOptions& options,
                                        const std::filesystem::path& out_dir) {
   std::vector<Diagnostic> out;
-  const std::filesystem::path assets = web_assets_dir();
   std::vector<std::pair<std::string, std::string>> files;  // name, bytes
-  for (const char* name : kWebAssetFiles) {
-    FileReadResult read = read_regular_file(assets / name, kMaxAssetBytes);
-    if (!read.bytes) {
-      out.push_back(error_of((assets / name).string(),
-                             read.error + "; build the page with `cmake --preset web && cmake --build --preset web` "
-                                          "(or set VIMG_WEB_ASSETS to the folder holding " + name + ")"));
-      return out;
-    }
-    files.emplace_back(name, std::move(*read.bytes));
-  }
+  if (!read_assets(kWebAssetFiles, files, out)) return out;
   std::set<std::string> names;
   for (const auto& image : images) {
     if (!names.insert(web_image_name(image)).second)
@@ -121,6 +128,16 @@ std::vector<Diagnostic> build_web_site(const std::vector<std::filesystem::path>&
   }
   index += "]}\n";
   if (make_dir(out_dir / "images", out)) write_or_report(out_dir / "images" / "index.json", index, out);
+  return out;
+}
+
+std::vector<Diagnostic> add_study_pages(const std::filesystem::path& out_dir) {
+  std::vector<Diagnostic> out;
+  std::vector<std::pair<std::string, std::string>> files;
+  if (!read_assets(kStudyAssetFiles, files, out)) return out;
+  for (const auto& [name, bytes] : files) {
+    if (!write_or_report(out_dir / name, bytes, out)) break;
+  }
   return out;
 }
 

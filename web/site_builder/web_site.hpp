@@ -25,17 +25,22 @@ std::optional<WebSiteOptions> web_site_options(const std::string& actuator_profi
 // The page's files, in the folder the web build wrote them to: VIMG_WEB_ASSETS if set, else the
 // folder CMake named (VIMG_WEB_ASSETS_DIR).
 std::filesystem::path web_assets_dir();
-inline constexpr const char* kWebAssetFiles[] = {"index.html", "vimg.js", "vimg.wasm", "worklet.js"};
+inline constexpr const char* kWebAssetFiles[] = {"index.html", "picture.js", "vimg.js", "vimg.wasm", "worklet.js"};
+// The study's pages (vimg serve --study, docs/studies.md "In the browser"), beside those.
+inline constexpr const char* kStudyAssetFiles[] = {"study.html", "study.js", "dashboard.html"};
 
 // The name an image has in the site (images/NAME.vsc): its file stem, characters other than
 // [A-Za-z0-9_.-] replaced by '_'.
 std::string web_image_name(const std::filesystem::path& image);
 
-// Writes DIR/index.html, vimg.js, vimg.wasm, worklet.js, DIR/images/NAME.vsc per image and
+// Writes DIR/index.html, picture.js, vimg.js, vimg.wasm, worklet.js, DIR/images/NAME.vsc per image and
 // DIR/images/index.json (the names in order). Returns the diagnostics (FILE:LINE: error: ...); the
 // site is complete only when there is no error. Files are written atomically.
 std::vector<Diagnostic> build_web_site(const std::vector<std::filesystem::path>& images, const WebSiteOptions& options,
                                        const std::filesystem::path& out_dir);
+
+// Adds the study's pages (kStudyAssetFiles) to a site build_web_site wrote.
+std::vector<Diagnostic> add_study_pages(const std::filesystem::path& out_dir);
 
 // Rewrites only DIR/images/NAME.vsc of one image (a save seen by `vimg serve`).
 std::vector<Diagnostic> update_web_image(const std::filesystem::path& image, const WebSiteOptions& options,

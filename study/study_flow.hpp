@@ -1,6 +1,8 @@
 #pragma once
 // The matching test's procedure (docs/player.md, "Matching test"), apart from drawing and devices:
-// which screen is up, which trial runs, and what a trial measured. Pure: every call takes the time
+// which screen is up, which trial runs, and what a trial measured; the one state machine of
+// vimg-player and of the study page in the browser (compiled to WebAssembly,
+// web/wasm/study_exports.cpp; docs/studies.md). Pure: every call takes the time
 // (`now_s`, seconds on any monotonic clock, the same one as the touch events' time_s), so tests
 // drive it with a fake clock and the scripted mode with the gesture's own times.
 //
@@ -20,7 +22,7 @@
 #include "player/touch_event.hpp"
 #include "study/trial_plan.hpp"
 
-namespace vimg::player_app {
+namespace vimg::study {
 
 enum class StudyScreen { welcome, training, rubbing, answering, pause, end };
 
@@ -44,7 +46,7 @@ class StudyFlow {
  public:
   // `images_per_set[s]`: how many pictures set s has (>= 1). `plan`: trial k is plan[k - 1].
   // `completed`: trials already recorded; the flow begins at trial completed + 1.
-  StudyFlow(std::vector<std::size_t> images_per_set, std::vector<study::MatchingTrialPlan> plan,
+  StudyFlow(std::vector<std::size_t> images_per_set, std::vector<MatchingTrialPlan> plan,
             std::size_t completed, StudyFlowOptions options, double now_s);
 
   StudyScreen screen() const { return screen_; }
@@ -91,7 +93,7 @@ class StudyFlow {
   };
 
   std::vector<std::size_t> images_per_set_;
-  std::vector<study::MatchingTrialPlan> plan_;
+  std::vector<MatchingTrialPlan> plan_;
   StudyFlowOptions options_;
   std::size_t next_ = 0;  // 0-based index of the trial under way or next
   StudyScreen screen_ = StudyScreen::welcome;

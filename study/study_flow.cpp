@@ -1,13 +1,13 @@
-#include "apps/vimg-player/study_flow.hpp"
+#include "study/study_flow.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
 
-namespace vimg::player_app {
+namespace vimg::study {
 
-StudyFlow::StudyFlow(std::vector<std::size_t> images_per_set, std::vector<study::MatchingTrialPlan> plan,
+StudyFlow::StudyFlow(std::vector<std::size_t> images_per_set, std::vector<MatchingTrialPlan> plan,
                      std::size_t completed, StudyFlowOptions options, double now_s)
     : images_per_set_(std::move(images_per_set)), plan_(std::move(plan)), options_(options) {
   if (images_per_set_.empty()) throw std::invalid_argument("a study needs at least one set");

@@ -1,13 +1,13 @@
-// The matching test's procedure (apps/vimg-player/study_flow.hpp) with a fake clock: screens in
+// The matching test's procedure (study/study_flow.hpp) with a fake clock: screens in
 // order, training per set, what a trial measures, resuming inside and at the edge of a set.
-#include "apps/vimg-player/study_flow.hpp"
+#include "study/study_flow.hpp"
 
 #include <gtest/gtest.h>
 
-namespace vimg::player_app {
+namespace vimg::study {
 namespace {
 
-using Plan = std::vector<study::MatchingTrialPlan>;
+using Plan = std::vector<MatchingTrialPlan>;
 
 // Two sets of two images, two trials each: trials 1-2 in set 0, 3-4 in set 1.
 const Plan kPlan{{0, 1}, {0, 0}, {1, 0}, {1, 1}};

@@ -1,0 +1,66 @@
+#pragma once
+// The trial logs of the participants a study server has seen (web/study_server/study_service.hpp):
+// each participant's DIR/ID.trials.csv opened through the one TrialLog (storage/study/trial_log.hpp)
+// on the first request with that participant's key, and held open (locked against a second writer)
+// until the server stops. One mutex per participant: answers of different participants are written
+// in parallel, answers of one participant one after the other. A finished participant's log cannot
+// be opened (TrialLog refuses it); the file is then read to tell "finished" from a broken file.
+// Each participant also has the bucket that rate-limits their answers (kAnswerBurst at once,
+// kAnswersPerSecond after that).
+// Threads: any; every call locks what it touches.
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "storage/study/trial_log.hpp"
+
+namespace vimg::web {
+
+inline constexpr double kAnswerBurst = 20.0;
+inline constexpr double kAnswersPerSecond = 4.0;
+
+// A token bucket: `capacity` requests at once, refilled at `rate_per_s`. Pure (the caller gives
+// the time).
+class RateBucket {
+ public:
+  RateBucket(double capacity, double rate_per_s) : capacity_(capacity), rate_per_s_(rate_per_s), tokens_(capacity) {}
+  bool take(double now_s);
+
+ private:
+  double capacity_, rate_per_s_, tokens_;
+  std::optional<double> last_s_;
+};
+
+struct ParticipantEntry {
+  std::optional<TrialLog> log;  // open unless finished or broken
+  bool finished = false;
+  std::string error;            // the log could not be opened (it is not finished): why
+  RateBucket answers{kAnswerBurst, kAnswersPerSecond};
+  std::size_t completed() const;
+};
+
+class ParticipantLogs {
+ public:
+  ParticipantLogs(std::filesystem::path dir, std::size_t total_trials) : dir_(std::move(dir)), total_(total_trials) {}
+
+  // Runs `use` with the participant's entry locked, its log opened first if it is not yet.
+  void with(const std::string& participant, const std::function<void(ParticipantEntry&)>& use);
+
+ private:
+  struct Slot {
+    std::mutex mutex;
+    ParticipantEntry entry;
+  };
+  void open(const std::string& participant, ParticipantEntry& entry) const;
+  std::filesystem::path dir_;
+  std::size_t total_;
+  std::mutex map_mutex_;
+  std::map<std::string, std::unique_ptr<Slot>> slots_;
+};
+
+}  // namespace vimg::web
