@@ -42,5 +42,5 @@ for (const v of native) peak = Math.max(peak, Math.abs(v));
 const startDiff = Math.abs(renderer.renderedStartS() - nativeTimes[0]);
 console.log(`samples web ${web.length} native ${native.length}; max |web - native| ${maxDiff} at sample ${at}; ` +
             `native peak |drive| ${peak}; first time web ${renderer.renderedStartS()} native ${nativeTimes[0]}`);
-const equal = web.length === native.length && maxDiff <= kTolerance && startDiff < 0.5 / rateHz;
+const equal = web.length === native.length && maxDiff <= kTolerance && startDiff < 0.5 / (rateHz ?? renderer.defaultRenderRateHz());
 process.exit(equal ? 0 : 1);

@@ -72,6 +72,8 @@ var VimgRenderer = (function () {
   };
   VimgRenderer.prototype.touchLatencyMaxMs = function () { return this.module._vimg_touch_latency_max_ms(); };
   VimgRenderer.prototype.liveSetPrediction = function (horizonS) { this.module._vimg_live_set_prediction(horizonS); };
+  // The rate renderGesture uses when none is given: `vimg render`'s (player/render_defaults.hpp).
+  VimgRenderer.prototype.defaultRenderRateHz = function () { return this.module._vimg_default_render_rate_hz(); };
   // How many fingers the live renderer follows at once (player/render_defaults.hpp).
   VimgRenderer.prototype.maxLiveFingers = function () { return this.module._vimg_max_live_fingers(); };
   VimgRenderer.prototype.predictionModels = function () {
