@@ -32,6 +32,7 @@ max_len_of() {
     picture_import_fuzz) echo 16384 ;;                # small PNGs: at most 65 536 pixels in the fuzzer
     touch_trace_fuzz) echo 1100000 ;;                 # 64 MiB / 64 = 1 MiB recordings; 15 625 samples
     touch_settings_fuzz) echo 8192 ;;                 # 4 KiB settings files
+    study_answer_fuzz) echo 4096 ;;                   # answers: bodies above 2 KiB get 413
     *) echo 65536 ;;
   esac
 }
