@@ -5,7 +5,7 @@
 //   a usage error    prints "PROGRAM: error: PROBLEM" and "Run 'PROGRAM --help' for usage." to
 //                    stderr, exit 2 (a missing or unknown option, a bad value, a missing argument)
 // Bad input files exit 1 and interrupted runs 130 (SIGINT) or 143 (SIGTERM); those are the
-// programs' own business, the codes are named here so that they are the same everywhere.
+// programs' own business, the codes are named in exit_codes.hpp so that they are the same everywhere.
 //
 // Number options are checked with finite_in(): CLI11's own ranges let NaN through.
 #include <CLI/CLI.hpp>
@@ -14,13 +14,9 @@
 #include <string>
 #include <vector>
 
-namespace vimg::cmdline {
+#include "cmdline/exit_codes.hpp"
 
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitFailure = 1;
-inline constexpr int kExitUsage = 2;
-inline constexpr int kExitSigint = 130;
-inline constexpr int kExitSigterm = 143;
+namespace vimg::cmdline {
 
 // The project's version, as every program prints it.
 const char* version();

@@ -8,7 +8,7 @@
 
 #include "apps/force/loop_run.hpp"
 #include "apps/force/status_line.hpp"
-#include "cmdline/command_line.hpp"
+#include "cmdline/exit_codes.hpp"
 #include "hal/force/force_device_opener.hpp"
 #include "player/haptic/force_log.hpp"
 #include "player/haptic/force_run_report.hpp"

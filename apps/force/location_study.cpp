@@ -16,7 +16,7 @@
 #include "apps/force/location_study_trial.hpp"
 #include "apps/force/loop_run.hpp"
 #include "apps/force/status_line.hpp"
-#include "cmdline/command_line.hpp"
+#include "cmdline/exit_codes.hpp"
 #include "hal/force/force_device_opener.hpp"
 #include "storage/number_text.hpp"
 #include "storage/study/study_file.hpp"

@@ -2,7 +2,7 @@
 
 #include <csignal>
 
-#include "cmdline/command_line.hpp"
+#include "cmdline/exit_codes.hpp"
 #include "realtime/clock.hpp"
 #include "storage/number_text.hpp"
 

@@ -21,7 +21,7 @@
 
 #include "apps/probe/probe_args.hpp"
 #include "apps/probe/probe_session.hpp"
-#include "cmdline/command_line.hpp"
+#include "cmdline/exit_codes.hpp"
 #include "hal/force/force_device_opener.hpp"
 #include "hal/rest_on_exit.hpp"
 #include "storage/volume/volume_scene_io.hpp"

@@ -12,7 +12,7 @@
 
 #include "apps/vimg-player/study_session.hpp"
 #include "apps/vimg-player/touch_input.hpp"
-#include "cmdline/command_line.hpp"
+#include "cmdline/exit_codes.hpp"
 #include "hal/rest_on_exit.hpp"
 #include "player/realtime_renderer.hpp"
 

@@ -14,7 +14,7 @@
 #include "apps/vimg-player/study_masking.hpp"
 #include "apps/vimg-player/study_responses.hpp"
 #include "apps/vimg-player/study_session.hpp"
-#include "cmdline/command_line.hpp"
+#include "cmdline/exit_codes.hpp"
 #include "hal/rest_on_exit.hpp"
 #include "player/actuator_sink.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "apps/vimg-player/study_session.hpp"
 #include "apps/vimg-player/study_stream_sink.hpp"
-#include "cmdline/command_line.hpp"
+#include "cmdline/exit_codes.hpp"
 #include "hal/rest_on_exit.hpp"
 #include "player/offline_render.hpp"
 
