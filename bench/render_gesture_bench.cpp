@@ -9,7 +9,7 @@
 #include "storage/actuator_profile.hpp"
 #include "player/actuator_sink.hpp"
 #include "player/drive_sinks.hpp"
-#include "player/gesture.hpp"
+#include "storage/gesture_csv.hpp"
 #include "player/offline_render.hpp"
 #include "player/scene.hpp"
 #include "storage/image_io.hpp"

@@ -12,7 +12,7 @@
 #include "cli/command.hpp"
 #include "storage/actuator_profile.hpp"
 #include "hal/rest_on_exit.hpp"
-#include "player/gesture.hpp"
+#include "storage/gesture_csv.hpp"
 #include "storage/atomic_file.hpp"
 #include "storage/limits.hpp"
 #include "study/compare.hpp"

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cli/command.hpp"
-#include "player/gesture.hpp"
+#include "storage/gesture_csv.hpp"
 #include "player/gesture_synth.hpp"
 #include "player/touch_trace_gesture.hpp"
 #include "storage/atomic_file.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "cli/command.hpp"
-#include "player/gesture.hpp"
+#include "storage/gesture_csv.hpp"
 #include "player/gesture_prediction.hpp"
 #include "storage/atomic_file.hpp"
 #include "storage/gesture_prediction_csv.hpp"

@@ -17,7 +17,7 @@
 #include "player/actuator_sink.hpp"
 #include "player/clip_export/clip_sink.hpp"
 #include "player/drive_sinks.hpp"
-#include "player/gesture.hpp"
+#include "storage/gesture_csv.hpp"
 #include "player/offline_render.hpp"
 #include "primitives/touch_prediction/touch_latency_defaults.hpp"
 #include "player/scene.hpp"

@@ -8,8 +8,8 @@
 
 #include "cli/command.hpp"
 #include "cli/serve_study.hpp"
-#include "storage/atomic_file.hpp"
 #include "storage/study/study_file.hpp"
+#include "storage/study/served_url_file.hpp"
 #include "web/server/lan_address.hpp"
 #include "web/server/served_images.hpp"
 #include "web/site_builder/web_site.hpp"
@@ -101,7 +101,7 @@ int run_serve_study(const StudyServeArgs& a, const sigset_t& stop_signals) {
     return kExitFailure;
   }
   const std::string base = base_url(a, server.port());
-  if (const auto error = write_file_atomically(fs::path(a.results) / kServedUrlFile, base + "\n")) {
+  if (const auto error = record_served_url(a.results, base)) {
     std::fprintf(stderr, "%s: warning: %s (vimg study link then needs --url)\n", kProgram, error->c_str());
   }
   const std::string researcher_key = std::get<web::StudyKeys>(keys).researcher_key();

@@ -15,8 +15,8 @@
 #include "cli/serve_study.hpp"
 #include "storage/atomic_file.hpp"
 #include "storage/file_extension.hpp"
-#include "storage/read_file.hpp"
 #include "storage/study/trial_log.hpp"
+#include "storage/study/served_url_file.hpp"
 #include "study/report_inputs.hpp"
 #include "study/report_writers.hpp"
 #include "web/study_server/study_keys.hpp"
@@ -90,16 +90,14 @@ int run_link(const LinkArgs& a) {
   }
   std::string base = a.url;
   if (base.empty()) {
-    const std::filesystem::path recorded = std::filesystem::path(a.dir) / kServedUrlFile;
-    const FileReadResult read = read_regular_file(recorded, 4096, FinalSymlink::refuse);
-    if (!read.bytes) {
+    const ServedUrlRead recorded = read_served_url(a.dir);
+    if (!recorded.url) {
       std::fprintf(stderr, "%s: error: %s; give the address participants reach the server at with --url "
                            "(vimg serve --study records it here when it starts)\n",
-                   recorded.string().c_str(), read.error.c_str());
+                   recorded.file.c_str(), recorded.error.c_str());
       return kExitFailure;
     }
-    base = *read.bytes;
-    while (!base.empty() && (base.back() == '\n' || base.back() == '\r')) base.pop_back();
+    base = *recorded.url;
   }
   if (base.rfind("http://", 0) != 0 && base.rfind("https://", 0) != 0) {
     return usage_error(program, "the address must begin with http:// or https://: '" + base + "'");

@@ -10,7 +10,6 @@
 #include "storage/atomic_file.hpp"
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
-#include "storage/read_file.hpp"
 #include "storage/volume/study_writer.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
@@ -38,12 +37,7 @@ int probe(const std::string& scene_path, const std::string& path_file, const std
   VolumeSceneLoadResult loaded = load_volume_scene_file(scene_path, load_options);
   print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) return kExitFailure;
-  FileReadResult text = read_regular_file(path_file, kMaxCsvFileBytes);
-  if (!text.bytes) {
-    std::fprintf(stderr, "%s: error: %s\n", path_file.c_str(), text.error.c_str());
-    return kExitFailure;
-  }
-  const ProbePathParseResult path = parse_probe_path_csv(*text.bytes, path_file);
+  const ProbePathParseResult path = load_probe_path_file(path_file);
   print_diagnostics(path.diagnostics);
   if (!path.path) return kExitFailure;
   auto scene = build_haptic_scene(*loaded.loaded);

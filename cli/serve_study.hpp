@@ -19,10 +19,6 @@ struct StudyServeArgs {
   std::vector<std::string> tls;  // CERT.pem KEY.pem, or empty
 };
 
-// The file where `vimg serve --study` records the address it serves DIR at ("https://HOST:PORT/"),
-// so that `vimg study link DIR` can print links without being told it.
-inline constexpr const char* kServedUrlFile = "vimg-serve.url";
-
 // A participant's link: BASE + "study.html#participant=ID&key=KEY" (the key after '#' never
 // reaches a server or its logs). BASE ends in '/'.
 std::string participant_link(const std::string& base_url, const std::string& participant, const std::string& key);

@@ -19,7 +19,7 @@ function(vimg_component name dir)
   endif()
 endfunction()
 
-# vimg_test_dir(NAME DIR LIBS ... LABELS unit|threaded|gui [SERIAL]): one GoogleTest executable of
+# vimg_test_dir(NAME DIR LIBS ... LABELS unit|threaded|gui|slow|limits [SERIAL]): one GoogleTest executable of
 # every .cpp in DIR. SERIAL: its tests run alone (timing-sensitive runs of real-time loops).
 function(vimg_test_dir name dir)
   cmake_parse_arguments(ARG "SERIAL" "" "LIBS;LABELS" ${ARGN})
@@ -32,15 +32,13 @@ function(vimg_test_dir name dir)
   target_compile_definitions(${name} PRIVATE
     VIMG_SOURCE_DIR="${PROJECT_SOURCE_DIR}" VIMG_BINARY_DIR="${PROJECT_BINARY_DIR}" VIMG_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/tests/data")
   vimg_warnings(${name})
-  # Under AddressSanitizer the test files build at -O0 (the code under test keeps the preset's -O1):
-  # optimising the expanded assertion macros was half of the sanitizer stage's build time; and
-  # GoogleTest's header is parsed once per executable, not once per test file. (Not in the optimised
-  # builds: there the precompiled header changed GCC 12's inlining enough to raise a false
-  # -Wstringop-overflow in a test's string concatenation.)
-  if(VIMG_SANITIZE MATCHES "address")
-    target_compile_options(${name} PRIVATE -O0)
-    target_precompile_headers(${name} PRIVATE <gtest/gtest.h>)
-  endif()
+  # The test files build at -O0 in every preset; the code under test keeps its preset's level (-O3
+  # in Release, -O1 under the sanitizers). Optimising the expanded assertion macros was half of the
+  # test files' build time, and at -O1 GCC 12 raises false -Warray-bounds and -Wstringop-overflow in
+  # the tests' string concatenation. GoogleTest's header is parsed once per executable
+  # (precompiled), not once per test file.
+  target_precompile_headers(${name} PRIVATE <gtest/gtest.h>)
+  target_compile_options(${name} PRIVATE -O0)
   # One label per executable: gtest_discover_tests flattens a label list into separate properties.
   list(LENGTH ARG_LABELS label_count)
   if(NOT label_count EQUAL 1)

@@ -13,7 +13,8 @@ set(VIMG_PUBLIC_ENTRY_HEADERS
   primitives/touch/dot_shader.hpp primitives/touch/line_shader.hpp primitives/touch/surface_shader.hpp
   primitives/actuator/actuator_model.hpp
   storage/image_io.hpp storage/diagnostic.hpp
-  player/scene.hpp player/gesture.hpp player/offline_render.hpp player/drive_sink.hpp player/drive_sinks.hpp)
+  primitives/gesture.hpp storage/gesture_csv.hpp
+  player/scene.hpp player/offline_render.hpp player/drive_sink.hpp player/drive_sinks.hpp)
 
 # vimg_header_closure(OUT ENTRIES...): the entries and every "dir/file.hpp" they include, transitively.
 function(vimg_header_closure out)

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "hal/drv2605l_calibration.hpp"
+#include "storage/drv2605l_calibration_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "fuzz/check_messages.hpp"
-#include "player/gesture.hpp"
+#include "storage/gesture_csv.hpp"
 #include "player/touch_trace_gesture.hpp"
 #include "storage/touch_trace/evdev_trace.hpp"
 

@@ -46,7 +46,7 @@
 #include "storage/actuator_profile.hpp"
 #include "realtime/clock.hpp"
 #include "hal/update_schedule.hpp"
-#include "hal/drv2605l_calibration.hpp"
+#include "storage/drv2605l_calibration_file.hpp"
 #include "hal/envelope_follower.hpp"
 #include "hal/fault_log.hpp"
 #include "hal/transfer_retry.hpp"

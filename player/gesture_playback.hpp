@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "player/finger_step.hpp"
-#include "player/gesture.hpp"
+#include "primitives/gesture.hpp"
 
 namespace vimg {
 

@@ -9,7 +9,7 @@
 // Rows come out in the order write_gesture_csv() writes them (time order, ties by stroke).
 #include <vector>
 
-#include "player/gesture.hpp"
+#include "storage/gesture_csv.hpp"
 #include "primitives/touch_prediction/finger_predictor.hpp"
 #include "primitives/touch_prediction/prediction_protocol.hpp"
 #include "storage/gesture_prediction_csv.hpp"

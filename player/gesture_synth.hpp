@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "player/gesture.hpp"
+#include "primitives/gesture.hpp"
 
 namespace vimg {
 

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "player/drive_sink.hpp"
-#include "player/gesture.hpp"
+#include "primitives/gesture.hpp"
 #include "player/render_defaults.hpp"
 #include "player/scene.hpp"
 #include "player/simulated_panel.hpp"

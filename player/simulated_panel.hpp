@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "player/finger_step.hpp"
-#include "player/gesture.hpp"
+#include "primitives/gesture.hpp"
 #include "player/live_tracker.hpp"
 #include "player/touch_event.hpp"
 

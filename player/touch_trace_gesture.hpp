@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "player/gesture.hpp"
+#include "primitives/gesture.hpp"
 #include "storage/touch_trace/evdev_trace.hpp"
 
 namespace vimg {

@@ -54,6 +54,12 @@ LoadResult load_image_file(const std::filesystem::path& path) {
   return parse_image_xml(*text.xml, name);
 }
 
+std::optional<PngFileKind> png_file_kind(const std::filesystem::path& path) {
+  const FileReadResult read = read_regular_file(path, kMaxImageFileBytes);
+  if (!read.bytes || !looks_like_png(*read.bytes)) return std::nullopt;
+  return PngFileKind{read_png_text(*read.bytes).xml.has_value(), png_physical_width_mm(*read.bytes)};
+}
+
 PngPieces encode_image_png(const Image& image, double scale_px_per_mm, int threads) {
   const PictureBands bands(image, scale_px_per_mm);
   if (bands.error()) {

@@ -46,6 +46,15 @@ LoadResult parse_image_xml(std::string_view xml, const std::string& file_name);
 // Loads `.vimg` (XML) or `.png` (with the `vibroimage` iTXt chunk), chosen by content.
 LoadResult load_image_file(const std::filesystem::path& path);
 
+// What a PNG file is before a program opens it: an image saved by vibroimage (it carries the
+// `vibroimage` text chunk) or a picture to import, and the width in mm its pHYs chunk gives.
+// Nothing when the file does not read (the open or the import then says why) or is not a PNG.
+struct PngFileKind {
+  bool vibroimage = false;
+  std::optional<double> width_mm;
+};
+std::optional<PngFileKind> png_file_kind(const std::filesystem::path& path);
+
 // The canonical XML text (spec section 1, "Round trip"). Assigns ids to elements that lack one.
 std::string write_image_xml(const Image& image);
 

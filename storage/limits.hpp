@@ -53,7 +53,7 @@ inline constexpr std::size_t kMaxVolumeSamples = (std::size_t{1} << 27) / kLimit
 inline constexpr std::size_t kMaxVolumeDataBytes = 512 * kMiB / kLimitScale;  // declared data: samples x type size (raw or inflated)
 inline constexpr double kMaxDeviceRateHz = 4000.0;              // a scene's device rate, Hz
 
-// --- Gestures (player/gesture.cpp enforces these) ----------------------------------------------------
+// --- Gestures (storage/gesture_csv.cpp enforces these) -----------------------------------------------
 inline constexpr std::size_t kMaxGestureRows = 1'000'000 / kLimitScale;
 inline constexpr double kMaxGestureDurationS = 600.0;   // last time minus first time
 inline constexpr double kMaxGestureTimeS = 86'400.0;    // |time_s| at most

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "player/gesture.hpp"
+#include "primitives/gesture.hpp"
 #include "primitives/actuator/response_params.hpp"
 #include "primitives/perception/perceptual_similarity.hpp"
 #include "primitives/perception/predicted_confusion.hpp"

@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include "player/gesture.hpp"
+#include "primitives/gesture.hpp"
 #include "primitives/actuator/response_params.hpp"
 #include "primitives/image.hpp"
 

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "player/gesture.hpp"
+#include "primitives/gesture.hpp"
 
 namespace vimg::study {
 

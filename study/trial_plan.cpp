@@ -81,6 +81,13 @@ std::vector<MatchingTrialPlan> plan_matching_trials(const MatchingStudy& study, 
   return plan;
 }
 
+std::vector<std::size_t> trial_sets(const std::vector<MatchingTrialPlan>& plan) {
+  std::vector<std::size_t> sets;
+  sets.reserve(plan.size());
+  for (const MatchingTrialPlan& trial : plan) sets.push_back(trial.set);
+  return sets;
+}
+
 std::vector<LocationTrialPlan> plan_location_trials(const LocationStudy& study, std::string_view participant) {
   const std::uint64_t seed = participant_seed(study.seed, participant);
   std::vector<LocationMetaphor> metaphors;

@@ -32,6 +32,8 @@ struct MatchingTrialPlan {
 };
 // Sets in file order (a pause between sets); within a set every image `repetitions` times, shuffled.
 std::vector<MatchingTrialPlan> plan_matching_trials(const MatchingStudy& study, std::string_view participant);
+// The set of each trial of a plan: what the readers of per-trial files (storage) need of it.
+std::vector<std::size_t> trial_sets(const std::vector<MatchingTrialPlan>& plan);
 
 struct LocationTrialPlan {
   LocationMetaphor metaphor = LocationMetaphor::roughness;

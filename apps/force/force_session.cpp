@@ -42,13 +42,10 @@ int run_force_session(const ForceArgs& args, const std::atomic<int>& signal_rece
   print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) return cmdline::kExitFailure;
   const DeviceProfile profile = loaded.loaded->scene.device;
-  std::vector<HandPathPoint> hand;
-  if (!args.path_file.empty()) {
-    std::vector<Diagnostic> problems;
-    hand = load_hand_path(args.path_file, problems);
-    print_diagnostics(problems);
-    if (hand.empty()) return cmdline::kExitFailure;
-  }
+  std::vector<Diagnostic> hand_problems;
+  std::optional<std::vector<HandPathPoint>> hand = simulated_hand_path(args.path_file, hand_problems);
+  print_diagnostics(hand_problems);
+  if (!hand) return cmdline::kExitFailure;
   for (const std::string* file : {&args.log_file, &args.telemetry_file}) {
     if (!file->empty() && !folder_exists_for(*file)) {
       std::fprintf(stderr, "%s: error: cannot write there: the folder does not exist\n", file->c_str());
@@ -56,7 +53,7 @@ int run_force_session(const ForceArgs& args, const std::atomic<int>& signal_rece
     }
   }
   OpenedForceDevice opened =
-      open_force_device(args.device, profile, std::move(hand),
+      open_force_device(args.device, profile, std::move(*hand),
                         args.path_file.empty() ? "the hand at rest at the workspace centre" : "the hand on " + args.path_file);
   if (!opened.device) {
     error(opened.error);

@@ -11,7 +11,7 @@
 #include <variant>
 #include <vector>
 
-#include "apps/force/location_study_marks.hpp"
+#include "storage/study/location_marks_file.hpp"
 #include "apps/force/location_study_port.hpp"
 #include "apps/force/location_study_trial.hpp"
 #include "apps/force/loop_run.hpp"
@@ -162,13 +162,10 @@ int run_location_study(const ForceArgs& args, const std::atomic<int>& signal_rec
   }
 
   // The simulated participant: the hand's path and the presses.
-  std::vector<HandPathPoint> hand;
-  if (!args.path_file.empty()) {
-    std::vector<Diagnostic> problems;
-    hand = load_hand_path(args.path_file, problems);
-    print_diagnostics(problems);
-    if (hand.empty()) return cmdline::kExitFailure;
-  }
+  std::vector<Diagnostic> hand_problems;
+  const std::optional<std::vector<HandPathPoint>> hand = simulated_hand_path(args.path_file, hand_problems);
+  print_diagnostics(hand_problems);
+  if (!hand) return cmdline::kExitFailure;
   std::optional<std::vector<double>> press_times_s;
   if (!args.marks_file.empty()) {
     MarkTimesResult marks = load_mark_times(args.marks_file, total);
@@ -230,7 +227,7 @@ int run_location_study(const ForceArgs& args, const std::atomic<int>& signal_rec
     OpenedForceDevice simulated;
     std::unique_ptr<MarkingPort> port;
     if (args.is_sim()) {
-      simulated = open_force_device("sim", profile, hand, hand_description);  // the hand at its path's start
+      simulated = open_force_device("sim", profile, *hand, hand_description);  // the hand at its path's start
       auto* sim = dynamic_cast<SimulatedForceDevice*>(simulated.device.get());
       if (!sim) {
         error(simulated.error.empty() ? "cannot make the simulated device" : simulated.error);

@@ -115,15 +115,12 @@ int main(int argc, char** argv) {
   std::string device_description;
   const vimg::SignalRestScope signals;
   if (!args.device.empty()) {
-    std::vector<vimg::HandPathPoint> hand;
-    if (!args.path_file.empty()) {
-      std::vector<vimg::Diagnostic> problems;
-      hand = vimg::load_hand_path(args.path_file, problems);
-      for (const auto& d : problems) std::fprintf(stderr, "%s\n", d.to_string().c_str());
-      if (hand.empty()) return 1;
-    }
+    std::vector<vimg::Diagnostic> problems;
+    std::optional<std::vector<vimg::HandPathPoint>> hand = vimg::simulated_hand_path(args.path_file, problems);
+    for (const auto& d : problems) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+    if (!hand) return 1;
     vimg::OpenedForceDevice opened = vimg::open_force_device(
-        args.device, scene.device, std::move(hand),
+        args.device, scene.device, std::move(*hand),
         args.path_file.empty() ? "the hand at rest at the workspace centre" : "the hand on " + args.path_file);
     if (!opened.device) return fail(opened.error);
     device = std::move(opened.device);

@@ -12,7 +12,8 @@
 
 #include "apps/vimg-player/player_setup.hpp"
 #include "apps/vimg-player/study_masking.hpp"
-#include "apps/vimg-player/study_responses.hpp"
+#include "storage/gesture_csv.hpp"
+#include "storage/study/scripted_responses.hpp"
 #include "apps/vimg-player/study_session.hpp"
 #include "cmdline/exit_codes.hpp"
 #include "hal/rest_on_exit.hpp"
@@ -83,7 +84,7 @@ int run_study(const PlayerArgs& args) {
   std::vector<std::size_t> chosen;
   Gesture gesture;
   if (scripted) {
-    const ResponsesResult responses = load_responses(*args.responses_path, material.stems, material.plan);
+    const ResponsesResult responses = load_responses(*args.responses_path, material.stems, study::trial_sets(material.plan));
     print(responses.diagnostics);
     const GestureParseResult rubbing = load_gesture_file(*args.gesture_path);
     for (const auto& error : rubbing.errors) std::fprintf(stderr, "%s\n", error.c_str());

@@ -17,7 +17,7 @@
 #include "apps/vimg-player/study_setup.hpp"
 #include "apps/vimg-player/study_text.hpp"
 #include "hal/output_spec.hpp"
-#include "player/gesture.hpp"
+#include "primitives/gesture.hpp"
 #include "player/scene.hpp"
 #include "storage/study/trial_log.hpp"
 

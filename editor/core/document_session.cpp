@@ -5,9 +5,6 @@
 #include "editor/core/document_problems.hpp"
 #include "storage/file_extension.hpp"
 #include "storage/image_io.hpp"
-#include "storage/limits.hpp"
-#include "storage/png_codec.hpp"
-#include "storage/read_file.hpp"
 
 namespace vimg::editor {
 
@@ -24,10 +21,10 @@ ImportQuestion import_question(const std::string& path) {
   ImportQuestion q;
   if (lower_extension(path) != ".png") return q;
   q.picture = true;
-  const FileReadResult read = read_regular_file(path, kMaxImageFileBytes);
-  if (!read.bytes) return q;  // the import reports it
-  if (looks_like_png(*read.bytes)) q.vibroimage = read_png_text(*read.bytes).xml.has_value();
-  if (auto width_mm = png_physical_width_mm(*read.bytes)) q.width_mm = *width_mm;
+  const std::optional<PngFileKind> kind = png_file_kind(path);
+  if (!kind) return q;  // the import reports it
+  q.vibroimage = kind->vibroimage;
+  if (kind->width_mm) q.width_mm = *kind->width_mm;
   return q;
 }
 

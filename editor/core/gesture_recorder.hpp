@@ -1,23 +1,16 @@
 #pragma once
-// Records the finger's path in playing mode and writes it as a gesture file (spec section 3),
-// which `vimg render` can replay.
+// Records the finger's path in playing mode and writes it as a gesture file (spec section 3,
+// storage/gesture_csv.hpp), which `vimg render` can replay.
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "storage/gesture_csv.hpp"
+
 namespace vimg::editor {
 
-enum class GesturePhase { down, move, up };
-
-struct GestureSample {
-  double time_s = 0.0;
-  int finger = 0;
-  double x_mm = 0.0;
-  double y_mm = 0.0;
-  std::optional<double> pressure;  // absent: the device does not report pressure
-  GesturePhase phase = GesturePhase::move;
-};
+using GestureSample = GestureRow;  // one row of the file
 
 class GestureRecorder {
  public:

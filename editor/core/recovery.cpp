@@ -8,18 +8,18 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
-#include <fstream>
 #include <system_error>
 #include <vector>
 
-#include "storage/atomic_file.hpp"
 #include "storage/image_io.hpp"
+#include "storage/line_file.hpp"
 
 namespace vimg::editor {
 namespace {
 
 constexpr const char* kDocument = "document.vimg";
 constexpr const char* kOrigin = "origin";
+constexpr std::size_t kMaxOriginFileBytes = 4096 + 2;  // PATH_MAX and the line end
 constexpr const char* kLock = "lock";
 constexpr const char* kLegacyDocument = "recovery.vimg";
 constexpr const char* kLegacyOrigin = "recovery.origin";
@@ -58,11 +58,9 @@ int lock_slot(const std::filesystem::path& slot) {
   return fd;
 }
 
-std::string read_first_line(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);
-  return line;
+// The slot's origin: one line naming the document's path (empty: untitled, or unreadable).
+std::string read_origin(const std::filesystem::path& file) {
+  return read_line_file(file, kMaxOriginFileBytes).line.value_or(std::string());
 }
 
 }  // namespace
@@ -147,7 +145,7 @@ bool RecoveryStore::adopt_orphan() {
     release();
     lock_fd_ = fd;
     slot_ = c.slot;
-    slot_origin_ = read_first_line(c.slot / kOrigin);
+    slot_origin_ = read_origin(c.slot / kOrigin);
     return true;
   }
   return false;
@@ -160,7 +158,7 @@ std::optional<std::string> RecoveryStore::save(const Image& image, const std::fi
     if (!slot_.empty()) discard();
     if (auto error = claim(origin)) return error;
   }
-  if (auto error = write_file_atomically(slot_ / kOrigin, origin.string() + "\n")) return error;
+  if (auto error = write_line_file(slot_ / kOrigin, origin.string())) return error;
   return save_image_file(image, slot_ / kDocument);
 }
 
@@ -172,7 +170,7 @@ bool RecoveryStore::exists() const {
 std::filesystem::path RecoveryStore::file() const { return slot_.empty() ? std::filesystem::path() : slot_ / kDocument; }
 
 std::filesystem::path RecoveryStore::recorded_origin() const {
-  return slot_.empty() ? std::filesystem::path() : std::filesystem::path(read_first_line(slot_ / kOrigin));
+  return slot_.empty() ? std::filesystem::path() : std::filesystem::path(read_origin(slot_ / kOrigin));
 }
 
 void RecoveryStore::discard() {

@@ -3,8 +3,6 @@
 #include <cstdio>
 
 #include "hal/force/hid_force_finder.hpp"
-#include "storage/limits.hpp"
-#include "storage/read_file.hpp"
 #include "storage/volume/probe_path_io.hpp"
 
 namespace vimg {
@@ -38,15 +36,11 @@ OpenedForceDevice open_force_device(const std::string& device, const DeviceProfi
   return opened;
 }
 
-std::vector<HandPathPoint> load_hand_path(const std::string& file, std::vector<Diagnostic>& diagnostics) {
-  FileReadResult read = read_regular_file(file, kMaxCsvFileBytes);
-  if (!read.bytes) {
-    diagnostics.push_back({Diagnostic::Severity::error, file, 0, read.error});
-    return {};
-  }
-  const ProbePathParseResult parsed = parse_probe_path_csv(*read.bytes, file);
+std::optional<std::vector<HandPathPoint>> simulated_hand_path(const std::string& file, std::vector<Diagnostic>& diagnostics) {
+  if (file.empty()) return std::vector<HandPathPoint>{};
+  const ProbePathParseResult parsed = load_probe_path_file(file);
   diagnostics.insert(diagnostics.end(), parsed.diagnostics.begin(), parsed.diagnostics.end());
-  if (!parsed.path || parsed.path->empty()) return {};
+  if (!parsed.path || parsed.path->empty()) return std::nullopt;
   std::vector<HandPathPoint> hand;
   hand.reserve(parsed.path->size());
   const double t0 = parsed.path->front().time_s;

@@ -6,6 +6,7 @@
 //   "hid:PATH"   that hidraw node.
 // And the haptic loop's settings for a scene's device profile.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,9 +27,11 @@ struct OpenedForceDevice {
 OpenedForceDevice open_force_device(const std::string& device, const DeviceProfile& profile,
                                     std::vector<HandPathPoint> hand, const std::string& hand_description);
 
-// A probe-path CSV (time_s,x_mm,y_mm,z_mm) as the simulated hand's path, starting at loop time 0.
-// Read through the bounded reader; problems go to `diagnostics`. Empty on failure.
-std::vector<HandPathPoint> load_hand_path(const std::string& file, std::vector<Diagnostic>& diagnostics);
+// The simulated hand of `--path FILE`: a probe-path CSV (time_s,x_mm,y_mm,z_mm, read by
+// storage/volume/probe_path_io.hpp) as the hand's path, starting at loop time 0; an empty path (the
+// hand at rest at the workspace centre) when `file` is empty. Problems go to `diagnostics`; nothing
+// on failure, a file without rows included.
+std::optional<std::vector<HandPathPoint>> simulated_hand_path(const std::string& file, std::vector<Diagnostic>& diagnostics);
 
 // The haptic loop's settings for a scene's device: its rate, force limit, start-up gate and ramp.
 HapticLoopConfig haptic_loop_config(const DeviceProfile& profile, int realtime_priority);

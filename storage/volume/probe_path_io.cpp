@@ -5,6 +5,7 @@
 #include "storage/csv_lines.hpp"
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
+#include "storage/read_file.hpp"
 
 namespace vimg {
 
@@ -78,6 +79,16 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
   if (!list.has_errors()) result.path = std::move(path);
   result.diagnostics = list.take();
   return result;
+}
+
+ProbePathParseResult load_probe_path_file(const std::filesystem::path& file) {
+  const FileReadResult read = read_regular_file(file, kMaxCsvFileBytes);
+  if (!read.bytes) {
+    ProbePathParseResult result;
+    result.diagnostics.push_back({Diagnostic::Severity::error, file.string(), 0, read.error});
+    return result;
+  }
+  return parse_probe_path_csv(*read.bytes, file.string());
 }
 
 std::optional<std::size_t> probe_render_rows(double duration_s, double rate_hz) {

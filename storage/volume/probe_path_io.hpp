@@ -4,6 +4,7 @@
 //   output: `time_s,x_mm,y_mm,z_mm,fx_N,fy_N,fz_N,kin_fx_N,kin_fy_N,kin_fz_N,vib_fx_N,vib_fy_N,vib_fz_N`
 //           (total force clamped to the device limit, then its kinaesthetic and vibrotactile parts).
 #include <cstddef>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,6 +29,9 @@ struct ProbePathParseResult {
 // coordinates over kMaxProbeCoordinateMm, more than kMaxProbePathRows rows and a path lasting more
 // than kMaxProbePathDurationS (storage/limits.hpp).
 ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::string& file_name);
+// The same from a file, read through the bounded reader (at most kMaxCsvFileBytes; a FIFO, device
+// or directory is refused as `FILE: error: ...`).
+ProbePathParseResult load_probe_path_file(const std::filesystem::path& file);
 
 // The rows a render of a path lasting `duration_s` at `rate_hz` produces, floor(duration x rate) + 1,
 // or nothing when that is over kMaxProbeRenderRows or the numbers are not finite and positive (a

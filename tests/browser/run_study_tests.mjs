@@ -7,7 +7,8 @@
 //   file       every trial exactly once, and the trial file equals vimg-player's scripted run of
 //              the same responses and rubbing except for the time columns (rub_s, response_s,
 //              time_utc; path_mm within 1e-3 mm: the browser quantizes pointer positions in CSS px)
-//   dashboard  the dashboard's report is `vimg study report` of the same file, byte for byte
+//   dashboard  the dashboard's report is `vimg study report` of the same file, byte for byte, and
+//              the link its form makes is the one `vimg study link` prints
 // Waits are on states (a printed URL, a row in the file, a promise), each bounded only against a hang.
 // usage: node run_study_tests.mjs VIMG VIMG_PLAYER|none SOURCE_DIR ARTIFACT_DIR
 import { execFileSync, spawn } from 'node:child_process';
@@ -140,7 +141,14 @@ await check('dashboard', async () => {
   await dashboard.waitForFunction(() => document.getElementById('report').srcdoc.includes('</html>'), { timeout: 30000 });
   const report = await dashboard.evaluate(() => document.getElementById('report').srcdoc);
   assert(report === fs.readFileSync(art('report.html'), 'utf8') || false, 'the dashboard\'s report differs from vimg study report');
-  return 'the same HTML as vimg study report';
+  // The dashboard's form makes a participant's link: the one `vimg study link` prints.
+  await dashboard.type('#participant', 'tablet-7');
+  await dashboard.click('#make-link button');
+  await dashboard.waitForFunction(() => document.getElementById('link').textContent.length > 0, { timeout: 30000 });
+  const made = await dashboard.evaluate(() => document.getElementById('link').textContent);
+  const printed = execFileSync(vimg, ['study', 'link', art('results'), '--participant', 'tablet-7'], { encoding: 'utf8' }).trim();
+  assert(made === printed, `the dashboard made the link ${made}, vimg study link prints ${printed}`);
+  return 'the same HTML as vimg study report; the same link as vimg study link';
 });
 
 if (problems.length) console.log(`page problems: ${problems.join('; ')}`);

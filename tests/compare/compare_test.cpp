@@ -1,6 +1,7 @@
 // The prediction of study/compare.hpp on the cases: identical images are confused with an
 // even split, a DOT, a LINE and a SURFACE are told apart, textures that differ only below the LRA's
 // felt band are more confusable on the LRA than on the ideal actuator, canvases must match.
+#include "storage/gesture_csv.hpp"
 #include "study/compare.hpp"
 
 #include <gtest/gtest.h>

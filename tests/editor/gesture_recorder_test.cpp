@@ -24,8 +24,17 @@ TEST(GestureRecorder, WritesTheSpecHeaderAndRows) {
   }
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0], "time_s,finger,x_mm,y_mm,pressure,phase");
-  EXPECT_EQ(rows[1], "0.000,0,5.000,20.000,1.000,down");
-  EXPECT_EQ(rows[3], "0.400,0,45.000,20.000,,up");
+  EXPECT_EQ(rows[1], "0,0,5,20,1,down");
+  EXPECT_EQ(rows[3], "0.4,0,45,20,,up");  // no pressure reported: the cell stays empty
+  // What the recorder writes, the gesture reader reads back: one stroke, the same points.
+  const GestureParseResult back = parse_gesture_csv(r.to_csv(), "take.csv");
+  ASSERT_TRUE(back.ok()) << (back.errors.empty() ? "" : back.errors.front());
+  ASSERT_EQ(back.gesture->strokes.size(), 1u);
+  const auto& points = back.gesture->strokes[0].points;
+  ASSERT_EQ(points.size(), 3u);
+  EXPECT_EQ(points[1].time_s, 0.01);
+  EXPECT_EQ(points[2].x_mm, 45.0);
+  EXPECT_EQ(points[2].pressure, 1.0);  // an empty cell reads as 1
 }
 
 TEST(GestureRecorder, TimeNeverDecreasesWithinAFinger) {
@@ -59,15 +68,17 @@ TEST(RecentFiles, ADamagedOrHostileStoreGivesOnlyPlausiblePaths) {
                            std::string(5000, 'x') + "\n/ok/b.png";
   EXPECT_EQ(parse_recent_files(text, 10), (std::vector<std::string>{"/ok/a.vimg", "/ok/b.png"}));
   EXPECT_EQ(parse_recent_files(text, 1), (std::vector<std::string>{"/ok/a.vimg"}));
-  // A store far over the read limit costs no more than the limit: a valid entry after the limit
-  // (past empty lines, which are skipped, not refused) is never read.
+  // A store far over the read limit costs no more than the limit: it is not read at all (a valid
+  // entry after the limit, past empty lines, which are skipped, not refused, included).
   const auto store = std::filesystem::path(VIMG_BINARY_DIR) / "editor_test_recent_huge.txt";
   { std::ofstream(store) << "/first.vimg\n" << std::string(4 * kMaxRecentFilesBytes, '\n') << "/after-the-limit.vimg\n"; }
   EXPECT_EQ(parse_recent_files("/first.vimg\n" + std::string(4 * kMaxRecentFilesBytes, '\n') + "/after-the-limit.vimg\n", 10),
             (std::vector<std::string>{"/first.vimg", "/after-the-limit.vimg"}));  // the parser alone takes it
   RecentFiles recent(store, 10);
-  EXPECT_EQ(recent.paths(), (std::vector<std::string>{"/first.vimg"}));
+  EXPECT_EQ(recent.paths(), (std::vector<std::string>{}));
   std::filesystem::remove(store);
+  // Nor is a store that is not a regular file, which would block (a FIFO) or never end (a device).
+  EXPECT_EQ(RecentFiles("/dev/zero", 10).paths(), (std::vector<std::string>{}));
 }
 
 TEST(GestureRecorder, SavesAtomicallyAndReportsAFailureWithoutLeavingATemporary) {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/force/location_study_marks.hpp"
+#include "storage/study/location_marks_file.hpp"
 #include "apps/force/location_study_port.hpp"
 #include "apps/force/location_study_trial.hpp"
 #include "hal/force/hid_force_device.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "storage/actuator_profile.hpp"
-#include "hal/drv2605l_calibration.hpp"
+#include "storage/drv2605l_calibration_file.hpp"
 
 namespace vimg {
 namespace {

@@ -195,7 +195,10 @@ TEST(Rings, BridgedRingsFillExactlyAsTheSeparateRingsEvenOdd) {
       const double y = 0.3183 + j * 0.7071;
       for (int i = 0; i < 140; ++i) {
         const double x = 0.2718 + i * 0.7071;
-        ASSERT_EQ(contains(bridged, {x, y}), inside_any(rings, {x, y})) << "trial " << trial << " at " << x << "," << y;
+        // A plain comparison on this hot path (392 000 points); the assertion only for a difference.
+        if (contains(bridged, {x, y}) != inside_any(rings, {x, y})) {
+          ASSERT_EQ(contains(bridged, {x, y}), inside_any(rings, {x, y})) << "trial " << trial << " at " << x << "," << y;
+        }
       }
     }
   }

@@ -25,7 +25,8 @@ if grep -rq "$source_dir\|$build" "$art/prefix/lib/cmake/vibroimage"; then fail 
 inc="$art/prefix/include/vibroimage"
 entries="primitives/image.hpp primitives/shader.hpp primitives/shader_state.hpp primitives/touch/dot_shader.hpp
   primitives/touch/line_shader.hpp primitives/touch/surface_shader.hpp primitives/actuator/actuator_model.hpp
-  storage/image_io.hpp storage/diagnostic.hpp player/scene.hpp player/gesture.hpp player/offline_render.hpp
+  primitives/gesture.hpp storage/gesture_csv.hpp
+  storage/image_io.hpp storage/diagnostic.hpp player/scene.hpp player/offline_render.hpp
   player/drive_sink.hpp player/drive_sinks.hpp"
 declare -A closure=()
 todo=($entries)

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "render_support.hpp"
+#include "storage/gesture_csv.hpp"
 #include "storage/image_io.hpp"
 
 namespace vimg {

@@ -3,7 +3,7 @@
 #include <cctype>
 #include <random>
 
-#include "player/gesture.hpp"
+#include "storage/gesture_csv.hpp"
 #include "storage/limits.hpp"
 
 namespace vimg {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "player/drive_sinks.hpp"
-#include "player/gesture.hpp"
+#include "primitives/gesture.hpp"
 #include "player/gesture_synth.hpp"
 #include "player/offline_render.hpp"
 #include "player/scene.hpp"

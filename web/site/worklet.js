@@ -9,7 +9,18 @@
 // `time`, an event applies at the next block. The page's horizon adds the output's latency
 // (docs/latency.md). Out: {type:'ready'}, {type:'scope', samples, contacts, eventIds, peak,
 // time, horizonS (the prediction horizon in use)}, {type:'error', text} (once, when rendering throws).
+// The site's worklet.js is web/wasm/vimg_api.js followed by this file (web/wasm/CMakeLists.txt), so
+// the worklet calls the wasm through the same VimgRenderer as the page: one copy-in of a .vsc.
 'use strict';
+
+// A NUL-terminated UTF-8 string of the wasm's memory (TextDecoder, where the worklet scope has it).
+function utf8At(memory, at) {
+  const heap = new Uint8Array(memory.buffer);
+  let end = at;
+  while (heap[end] !== 0) ++end;
+  if (typeof TextDecoder === 'function') return new TextDecoder().decode(heap.subarray(at, end));
+  return String.fromCharCode.apply(null, heap.subarray(at, end));
+}
 
 class VimgProcessor extends AudioWorkletProcessor {
   constructor() {
@@ -49,26 +60,23 @@ class VimgProcessor extends AudioWorkletProcessor {
     instance.exports.__wasm_call_ctors();
     this.exports = instance.exports;
     this.memory = memory;
-  }
-
-  loadVsc(bytes) {
-    const x = this.exports;
-    const view = new Uint8Array(bytes);
-    const at = x.malloc(Math.max(1, view.length));
-    new Uint8Array(this.memory.buffer).set(view, at);
-    const ok = x.vimg_load_vsc(at, view.length);
-    x.free(at);
-    return ok === 1;
+    // VimgRenderer over this instance, with the names Emscripten's loader gives the page (_name, HEAPU8).
+    const module = {
+      get HEAPU8() { return new Uint8Array(memory.buffer); },
+      UTF8ToString: (at) => utf8At(memory, at),
+    };
+    for (const name of Object.keys(instance.exports)) module['_' + name] = instance.exports[name];
+    this.renderer = new VimgRenderer(module);
   }
 
   onMessage(m) {
     if (m.type === 'init') {
       this.instantiate(m.wasm);
       this.exports.vimg_live_start(sampleRate);
-      if (m.vsc) this.loadVsc(m.vsc);
+      if (m.vsc) this.renderer.loadVsc(m.vsc);
       this.port.postMessage({ type: 'ready', sampleRate });
     } else if (m.type === 'vsc' && this.exports) {
-      this.loadVsc(m.bytes);
+      this.renderer.loadVsc(m.bytes);
     } else if (m.type === 'event' && this.exports) {
       const x = this.exports;
       const offset = this.offsetS === null ? currentTime - x.vimg_live_time_s() : this.offsetS;

@@ -1,5 +1,6 @@
-// The renderer's JavaScript face, appended to vimg.js after Emscripten's loader (--extern-post-js),
-// so the page, the Node tests and the benchmark all call the wasm through these same few lines.
+// The renderer's JavaScript face, appended to vimg.js after Emscripten's loader (--extern-post-js)
+// and put in front of the site's worklet.js, so the page, its AudioWorklet, the Node tests and the
+// benchmark all call the wasm through these same few lines.
 // Nothing here models anything: every value comes from the C++ (web/wasm/exports.cpp).
 var VimgRenderer = (function () {
   'use strict';
@@ -101,4 +102,5 @@ var VimgRenderer = (function () {
 
   return VimgRenderer;
 })();
-createVimgModule.VimgRenderer = VimgRenderer;
+// On the loader (vimg.js) for Node and the page; the worklet (worklet.js) has no loader.
+if (typeof createVimgModule !== 'undefined') createVimgModule.VimgRenderer = VimgRenderer;

@@ -6,7 +6,7 @@
 #include <span>
 
 #include "player/actuator_sink.hpp"
-#include "player/gesture.hpp"
+#include "storage/gesture_csv.hpp"
 #include "player/offline_render.hpp"
 #include "realtime/soft_limit.hpp"
 #include "storage/limits.hpp"

@@ -1,5 +1,6 @@
 #pragma once
-// DRV2605L auto-calibration results, stored after a calibration and restored at start-up.
+// DRV2605L auto-calibration results, stored after a calibration and restored at start-up: the
+// driver (hal/drv2605l_driver.hpp) reads and writes its `calibration=FILE` through these functions.
 // File format (text, one key=value a line, '#' comments):
 //   resonance_hz=175        the profile resonance the calibration was made for
 //   a_cal_comp=0x0E         register 0x18

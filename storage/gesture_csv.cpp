@@ -1,4 +1,4 @@
-#include "player/gesture.hpp"
+#include "storage/gesture_csv.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -60,28 +60,6 @@ std::string format_number(double v) {
 
 }  // namespace
 
-double Gesture::start_time_s() const {
-  double t = 0.0;
-  bool any = false;
-  for (const auto& s : strokes) {
-    if (s.points.empty()) continue;
-    t = any ? std::min(t, s.points.front().time_s) : s.points.front().time_s;
-    any = true;
-  }
-  return t;
-}
-
-double Gesture::end_time_s() const {
-  double t = 0.0;
-  bool any = false;
-  for (const auto& s : strokes) {
-    if (s.points.empty()) continue;
-    t = any ? std::max(t, s.points.back().time_s) : s.points.back().time_s;
-    any = true;
-  }
-  return t;
-}
-
 GestureParseResult parse_gesture_csv(std::string_view text, const std::string& file_name) {
   GestureParseResult result;
   auto error = [&](int line, const std::string& problem) {
@@ -122,35 +100,27 @@ GestureParseResult parse_gesture_csv(std::string_view text, const std::string& f
     GesturePoint p;
     int finger = 0;
     bool ok = true;
-    if (!parse_number(f[0], p.time_s)) {
-      error(line_no, "time_s " + quoted(f[0]) + " is not a finite number");
-      ok = false;
-    } else if (std::fabs(p.time_s) > kMaxGestureTimeS) {
-      error(line_no, "time_s " + quoted(f[0]) + " is beyond " + format_number(kMaxGestureTimeS) + " s (limit " +
-                         format_number(kMaxGestureTimeS) + ")");
-      ok = false;
-    }
+    // A finite number within +-limit; false (reported) otherwise.
+    const auto bounded = [&](const char* name, std::string_view field, double limit, const char* unit, double& out) {
+      if (!parse_number(field, out)) {
+        error(line_no, std::string(name) + " " + quoted(field) + " is not a finite number");
+        return false;
+      }
+      if (std::fabs(out) > limit) {
+        error(line_no, std::string(name) + " " + quoted(field) + " is beyond " + format_number(limit) + " " + unit +
+                           " (limit " + format_number(limit) + ")");
+        return false;
+      }
+      return true;
+    };
+    if (!bounded("time_s", f[0], kMaxGestureTimeS, "s", p.time_s)) ok = false;
     if (!parse_finger(f[1], finger) || finger < 0 || finger > kMaxGestureFinger) {
       error(line_no, "finger " + quoted(f[1]) + " is not an integer in 0.." +
                          std::to_string(kMaxGestureFinger));
       ok = false;
     }
-    if (!parse_number(f[2], p.x_mm)) {
-      error(line_no, "x_mm " + quoted(f[2]) + " is not a finite number");
-      ok = false;
-    } else if (std::fabs(p.x_mm) > kMaxGestureCoordinateMm) {
-      error(line_no, "x_mm " + quoted(f[2]) + " is beyond " + format_number(kMaxGestureCoordinateMm) + " mm (limit " +
-                         format_number(kMaxGestureCoordinateMm) + ")");
-      ok = false;
-    }
-    if (!parse_number(f[3], p.y_mm)) {
-      error(line_no, "y_mm " + quoted(f[3]) + " is not a finite number");
-      ok = false;
-    } else if (std::fabs(p.y_mm) > kMaxGestureCoordinateMm) {
-      error(line_no, "y_mm " + quoted(f[3]) + " is beyond " + format_number(kMaxGestureCoordinateMm) + " mm (limit " +
-                         format_number(kMaxGestureCoordinateMm) + ")");
-      ok = false;
-    }
+    if (!bounded("x_mm", f[2], kMaxGestureCoordinateMm, "mm", p.x_mm)) ok = false;
+    if (!bounded("y_mm", f[3], kMaxGestureCoordinateMm, "mm", p.y_mm)) ok = false;
     if (f[4].empty()) {
       p.pressure = 1.0;
     } else if (!parse_number(f[4], p.pressure) || p.pressure < 0.0 || p.pressure > 1.0) {
@@ -227,27 +197,29 @@ GestureParseResult load_gesture_file(const std::filesystem::path& path) {
   return parse_gesture_csv(*read.bytes, path.string());
 }
 
-std::string write_gesture_csv(const Gesture& gesture) {
-  struct Row {
-    double time_s;
-    int finger;
-    const GesturePoint* p;
-    const char* phase;
-  };
-  std::vector<Row> rows;
-  for (const auto& s : gesture.strokes) {
-    for (std::size_t i = 0; i < s.points.size(); ++i) {
-      const char* phase = i == 0 ? "down" : (i + 1 == s.points.size() ? "up" : "move");
-      rows.push_back({s.points[i].time_s, s.finger, &s.points[i], phase});
-    }
-  }
-  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.time_s < b.time_s; });
-  std::string out = "time_s,finger,x_mm,y_mm,pressure,phase\n";
-  for (const Row& r : rows) {
-    out += format_number(r.time_s) + "," + std::to_string(r.finger) + "," + format_number(r.p->x_mm) + "," +
-           format_number(r.p->y_mm) + "," + format_number(r.p->pressure) + "," + r.phase + "\n";
+std::string write_gesture_rows(const std::vector<GestureRow>& rows, std::string_view comment) {
+  std::string out;
+  if (!comment.empty()) out += "# " + std::string(comment) + "\n";
+  out += "time_s,finger,x_mm,y_mm,pressure,phase\n";
+  for (const GestureRow& r : rows) {
+    out += format_number(r.time_s) + "," + std::to_string(r.finger) + "," + format_number(r.x_mm) + "," +
+           format_number(r.y_mm) + "," + (r.pressure ? format_number(std::clamp(*r.pressure, 0.0, 1.0)) : std::string()) +
+           "," + (r.phase == GesturePhase::down ? "down" : r.phase == GesturePhase::up ? "up" : "move") + "\n";
   }
   return out;
+}
+
+std::string write_gesture_csv(const Gesture& gesture) {
+  std::vector<GestureRow> rows;
+  for (const auto& s : gesture.strokes) {
+    for (std::size_t i = 0; i < s.points.size(); ++i) {
+      const GesturePhase phase = i == 0 ? GesturePhase::down : (i + 1 == s.points.size() ? GesturePhase::up : GesturePhase::move);
+      const GesturePoint& p = s.points[i];
+      rows.push_back({p.time_s, s.finger, p.x_mm, p.y_mm, p.pressure, phase});
+    }
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const GestureRow& a, const GestureRow& b) { return a.time_s < b.time_s; });
+  return write_gesture_rows(rows);
 }
 
 }  // namespace vimg

@@ -1,13 +1,13 @@
-// Scripted responses of a matching test (apps/vimg-player/study_responses.hpp).
-#include "apps/vimg-player/study_responses.hpp"
+// Scripted responses of a matching test (storage/study/scripted_responses.hpp).
+#include "storage/study/scripted_responses.hpp"
 
 #include <gtest/gtest.h>
 
-namespace vimg::player_app {
+namespace vimg {
 namespace {
 
 const std::vector<std::vector<std::string>> kStems{{"dot", "line"}, {"a", "b", "c"}};
-const std::vector<study::MatchingTrialPlan> kPlan{{0, 0}, {0, 1}, {1, 2}};
+const std::vector<std::size_t> kPlan{0, 0, 1};  // the set of trials 1, 2 and 3
 
 std::string all_errors(const ResponsesResult& r) {
   std::string text;
@@ -56,4 +56,4 @@ TEST(StudyResponses, AFileThatIsNotThereIsNamed) {
 }
 
 }  // namespace
-}  // namespace vimg::player_app
+}  // namespace vimg

@@ -1,4 +1,4 @@
-#include "hal/drv2605l_calibration.hpp"
+#include "storage/drv2605l_calibration_file.hpp"
 
 #include <system_error>
 

@@ -9,7 +9,7 @@
 #include "storage/image_io.hpp"
 #include "storage/import/import.hpp"
 #include "storage/limits.hpp"
-#include "tests/hostile/svg_drawing.hpp"
+#include "tests/bounds/svg_drawing.hpp"
 
 namespace vimg {
 namespace {

@@ -12,8 +12,8 @@
 #include "storage/image_io.hpp"
 #include "storage/import/import.hpp"
 #include "storage/limits.hpp"
-#include "tests/hostile/svg_drawing.hpp"
-#include "tests/hostile/bounded_child.hpp"
+#include "tests/bounds/svg_drawing.hpp"
+#include "tests/bounds/bounded_child.hpp"
 
 namespace vimg {
 namespace {

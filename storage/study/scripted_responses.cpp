@@ -1,4 +1,4 @@
-#include "apps/vimg-player/study_responses.hpp"
+#include "storage/study/scripted_responses.hpp"
 
 #include <charconv>
 
@@ -7,7 +7,7 @@
 #include "storage/read_file.hpp"
 #include "storage/text_trim.hpp"
 
-namespace vimg::player_app {
+namespace vimg {
 
 namespace {
 
@@ -41,9 +41,9 @@ std::string missing_list(const std::vector<std::size_t>& trials) {
 
 ResponsesResult parse_responses(std::string_view text, const std::string& file_name,
                                 const std::vector<std::vector<std::string>>& set_stems,
-                                const std::vector<study::MatchingTrialPlan>& plan) {
+                                const std::vector<std::size_t>& trial_sets) {
   DiagnosticList problems(file_name, DiagnosticList::Order::by_line);
-  const std::size_t total = plan.size();
+  const std::size_t total = trial_sets.size();
   std::vector<std::size_t> chosen(total, 0);
   std::vector<int> answered_at(total, 0);  // the line that answered each trial, 0: none yet
   CsvLines lines(text, {.trim_blanks = true, .comments = false});
@@ -77,7 +77,7 @@ ResponsesResult parse_responses(std::string_view text, const std::string& file_n
                                       std::to_string(answered_at[trial - 1]) + ")");
       continue;
     }
-    const auto& stems = set_stems.at(plan[trial - 1].set);
+    const auto& stems = set_stems.at(trial_sets[trial - 1]);
     std::size_t image = 0;
     while (image < stems.size() && stems[image] != cells[1]) ++image;
     if (image == stems.size()) {
@@ -106,14 +106,14 @@ ResponsesResult parse_responses(std::string_view text, const std::string& file_n
 }
 
 ResponsesResult load_responses(const std::filesystem::path& csv, const std::vector<std::vector<std::string>>& set_stems,
-                               const std::vector<study::MatchingTrialPlan>& plan) {
+                               const std::vector<std::size_t>& trial_sets) {
   const FileReadResult read = read_regular_file(csv, kMaxCsvFileBytes);
   if (!read.bytes) {
     ResponsesResult result;
     result.diagnostics.push_back(Diagnostic{Diagnostic::Severity::error, csv.string(), 0, read.error});
     return result;
   }
-  return parse_responses(*read.bytes, csv.string(), set_stems, plan);
+  return parse_responses(*read.bytes, csv.string(), set_stems, trial_sets);
 }
 
-}  // namespace vimg::player_app
+}  // namespace vimg

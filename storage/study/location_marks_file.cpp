@@ -1,11 +1,11 @@
-#include "apps/force/location_study_marks.hpp"
+#include "storage/study/location_marks_file.hpp"
 
 #include "storage/csv_lines.hpp"
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
 #include "storage/read_file.hpp"
 
-namespace vimg::force_app {
+namespace vimg {
 namespace {
 
 constexpr std::string_view kHeader = "trial,time_s";
@@ -92,4 +92,4 @@ MarkTimesResult load_mark_times(const std::filesystem::path& file, std::size_t t
   return parse_mark_times(*read.bytes, file.string(), total_trials);
 }
 
-}  // namespace vimg::force_app
+}  // namespace vimg

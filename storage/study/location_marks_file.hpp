@@ -21,7 +21,7 @@
 
 #include "storage/diagnostic.hpp"
 
-namespace vimg::force_app {
+namespace vimg {
 
 struct MarkTimesResult {
   std::optional<std::vector<double>> times_s;  // trial k's time is (*times_s)[k - 1]; set only without errors
@@ -32,4 +32,4 @@ struct MarkTimesResult {
 MarkTimesResult parse_mark_times(std::string_view text, const std::string& file_name, std::size_t total_trials);
 MarkTimesResult load_mark_times(const std::filesystem::path& file, std::size_t total_trials);
 
-}  // namespace vimg::force_app
+}  // namespace vimg

@@ -13,9 +13,8 @@
 #include <vector>
 
 #include "storage/diagnostic.hpp"
-#include "study/trial_plan.hpp"
 
-namespace vimg::player_app {
+namespace vimg {
 
 struct ResponsesResult {
   // chosen[k - 1]: the image index (within trial k's set) chosen in trial k. Set only without errors.
@@ -24,11 +23,13 @@ struct ResponsesResult {
   bool ok() const { return chosen.has_value(); }
 };
 
-// `set_stems[s]`: the stems of set s's images, in file order; `plan`: trial k is plan[k - 1].
+// `set_stems[s]`: the stems of set s's images, in file order; `trial_sets[k - 1]`: the set that
+// trial k presents (the study's plan, study/trial_plan.hpp), so the study has trial_sets.size()
+// trials.
 ResponsesResult parse_responses(std::string_view text, const std::string& file_name,
                                 const std::vector<std::vector<std::string>>& set_stems,
-                                const std::vector<study::MatchingTrialPlan>& plan);
+                                const std::vector<std::size_t>& trial_sets);
 ResponsesResult load_responses(const std::filesystem::path& csv, const std::vector<std::vector<std::string>>& set_stems,
-                               const std::vector<study::MatchingTrialPlan>& plan);
+                               const std::vector<std::size_t>& trial_sets);
 
-}  // namespace vimg::player_app
+}  // namespace vimg
