@@ -57,15 +57,7 @@ std::string inflate_bomb_png() {
   }
   deflateEnd(&s);
   z.resize(written);
-  std::string png = "\x89PNG\r\n\x1a\n";
-  std::string ihdr;
-  test::put_be32(ihdr, 16);
-  test::put_be32(ihdr, 16);
-  ihdr += std::string{8, 0, 0, 0, 0};
-  test::put_chunk(png, "IHDR", ihdr);
-  test::put_chunk(png, "IDAT", z);
-  test::put_chunk(png, "IEND", "");
-  return png;
+  return test::png_with_idat(16, 16, 0, z);
 }
 
 TEST(PictureBounds, ImageDataThatInflatesFarPastItsRowsIsRefusedNamingWhatTheyNeed) {
@@ -85,34 +77,9 @@ TEST(PictureBounds, ImageDataThatInflatesFarPastItsRowsIsRefusedNamingWhatTheyNe
 // A 5000 x 5000 maze (one-pixel walls and corridors): the corridors' outline turns at nearly every
 // other pixel, tens of millions of points that no polygon may hold.
 std::vector<std::uint8_t> maze_pixels(int side) {
-  std::vector<std::uint8_t> px(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);  // black walls
-  const int cells = (side - 1) / 2;
-  const auto open = [&](int x, int y) { px[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)] = 255; };
-  std::vector<bool> seen(static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells), false);
-  std::mt19937 rng(5);
-  std::vector<std::pair<int, int>> path = {{0, 0}};
-  seen[0] = true;
-  open(1, 1);
-  constexpr int kSteps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  while (!path.empty()) {
-    const auto [cx, cy] = path.back();
-    std::array<int, 4> ways{};
-    int count = 0;
-    for (int d = 0; d < 4; ++d) {
-      const int nx = cx + kSteps[d][0], ny = cy + kSteps[d][1];
-      if (nx >= 0 && ny >= 0 && nx < cells && ny < cells && !seen[static_cast<std::size_t>(ny * cells + nx)]) ways[static_cast<std::size_t>(count++)] = d;
-    }
-    if (count == 0) {
-      path.pop_back();
-      continue;
-    }
-    const int d = ways[rng() % static_cast<unsigned>(count)];
-    const int nx = cx + kSteps[d][0], ny = cy + kSteps[d][1];
-    seen[static_cast<std::size_t>(ny * cells + nx)] = true;
-    open(2 * cx + 1 + kSteps[d][0], 2 * cy + 1 + kSteps[d][1]);
-    open(2 * nx + 1, 2 * ny + 1);
-    path.push_back({nx, ny});
-  }
+  const std::vector<bool> corridor = test::maze_corridors(side, 5);
+  std::vector<std::uint8_t> px(corridor.size());
+  for (std::size_t i = 0; i < px.size(); ++i) px[i] = corridor[i] ? 255 : 0;  // black walls
   return px;
 }
 
@@ -170,14 +137,7 @@ TEST(PictureBounds, HolesTestedAgainstManyLongOutlinesAreRefusedAtTheWorkLimit) 
 // docs/limits.md: a picture import decodes at most kMaxPngPixels; one beyond says its size and the
 // limit. The header alone decides: the image data is never inflated.
 TEST(PictureBounds, APictureOverThePixelLimitIsRefusedWithItsSizeAndTheLimit) {
-  std::string png = "\x89PNG\r\n\x1a\n";
-  std::string ihdr;
-  test::put_be32(ihdr, 5000);
-  test::put_be32(ihdr, 5001);
-  ihdr += std::string{8, 0, 0, 0, 0};
-  test::put_chunk(png, "IHDR", ihdr);
-  test::put_chunk(png, "IDAT", "not even zlib");
-  test::put_chunk(png, "IEND", "");
+  const std::string png = test::png_with_idat(5000, 5001, 0, "not even zlib");
   const ImportResult r = import_picture(png, "big.png", at_one_mm_per_pixel(5000));
   EXPECT_EQ(errors_of(r), "big.png: error: cannot import the picture: the picture is 5000 x 5001 pixels, over the "
                           "limit of 25000000 pixels decoded (limit 25000000)\n");

@@ -125,33 +125,9 @@ TEST(Contours, TracingStopsWhenAskedAndTheOuterOutlineComesBeforeItsHoles) {
 // A maze of one-pixel walls and corridors (odd side): the walls one outline, the corridors one
 // hole, both turning at nearly every other pixel.
 std::vector<std::uint8_t> maze_mask(int side) {
-  std::vector<std::uint8_t> mask(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 1);
-  const int cells = (side - 1) / 2;
-  const auto at = [&](int x, int y) -> std::uint8_t& { return mask[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)]; };
-  std::vector<bool> seen(static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells), false);
-  std::mt19937 rng(1);
-  std::vector<std::pair<int, int>> path = {{0, 0}};
-  seen[0] = true;
-  at(1, 1) = 0;
-  constexpr int kSteps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  while (!path.empty()) {
-    const auto [cx, cy] = path.back();
-    int open[4], count = 0;
-    for (int d = 0; d < 4; ++d) {
-      const int nx = cx + kSteps[d][0], ny = cy + kSteps[d][1];
-      if (nx >= 0 && ny >= 0 && nx < cells && ny < cells && !seen[static_cast<std::size_t>(ny * cells + nx)]) open[count++] = d;
-    }
-    if (count == 0) {
-      path.pop_back();
-      continue;
-    }
-    const int d = open[rng() % static_cast<unsigned>(count)];
-    const int nx = cx + kSteps[d][0], ny = cy + kSteps[d][1];
-    seen[static_cast<std::size_t>(ny * cells + nx)] = true;
-    at(2 * cx + 1 + kSteps[d][0], 2 * cy + 1 + kSteps[d][1]) = 0;
-    at(2 * nx + 1, 2 * ny + 1) = 0;
-    path.push_back({nx, ny});
-  }
+  const std::vector<bool> corridor = test::maze_corridors(side, 1);
+  std::vector<std::uint8_t> mask(corridor.size());
+  for (std::size_t i = 0; i < mask.size(); ++i) mask[i] = corridor[i] ? 0 : 1;
   return mask;
 }
 
