@@ -15,6 +15,7 @@
 #include "storage/gesture_csv.hpp"
 #include "storage/atomic_file.hpp"
 #include "storage/limits.hpp"
+#include "storage/print_diagnostics.hpp"
 #include "study/compare.hpp"
 #include "study/compare_output.hpp"
 
@@ -94,7 +95,7 @@ int run_compare_command(const CompareArgs& a) {
     std::fprintf(stderr, "%s: %zu of %zu signals analysed\n", kProgram, analysed, total);
   };
   const study::CompareResult result = study::run_compare(request);
-  for (const Diagnostic& d : result.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  print_diagnostics(result.diagnostics);
   if (result.interrupted || rest_requested()) return interrupted(a.out);
   if (!result.ok()) return kExitFailure;
   for (const std::string& w : result.warnings) std::fprintf(stderr, "%s: warning: %s\n", kProgram, w.c_str());

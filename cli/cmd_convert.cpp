@@ -11,6 +11,7 @@
 #include "cli/command.hpp"
 #include "storage/image_io.hpp"
 #include "storage/file_extension.hpp"
+#include "storage/print_diagnostics.hpp"
 
 namespace vimg::cli {
 
@@ -39,7 +40,7 @@ int run_convert(const std::string& in_file, const std::string& out_file, double 
     return kExitFailure;
   }
   const LoadResult loaded = load_image_file(in);
-  for (const Diagnostic& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) {
     std::fprintf(stderr, "vimg convert: %s is not a valid image; nothing written\n", in.c_str());
     return kExitFailure;

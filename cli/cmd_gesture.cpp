@@ -12,6 +12,7 @@
 #include "player/gesture_synth.hpp"
 #include "player/touch_trace_gesture.hpp"
 #include "storage/atomic_file.hpp"
+#include "storage/print_diagnostics.hpp"
 
 namespace vimg::cli {
 
@@ -85,7 +86,7 @@ int run_import(const ImportArgs& a) {
   }
   if (a.px_per_mm > 0.0) mapping.units_per_mm = a.px_per_mm;
   const TouchTraceParseResult trace = load_touch_trace(a.trace);
-  for (const auto& d : trace.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  print_diagnostics(trace.diagnostics);
   if (!trace.trace) return kExitFailure;
   const TraceGestureResult converted = trace_to_gesture(*trace.trace, mapping, a.trace);
   if (!converted.usage_problem.empty()) return usage_error("vimg gesture import", converted.usage_problem);

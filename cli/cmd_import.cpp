@@ -11,6 +11,7 @@
 #include "storage/image_io.hpp"
 #include "storage/import/import.hpp"
 #include "storage/limits.hpp"
+#include "storage/print_diagnostics.hpp"
 
 namespace vimg::cli {
 
@@ -37,7 +38,7 @@ int run_import(const ImportArgs& a) {
   };
   const ImportResult r = import_file(a.input, options);
   if (rest_requested()) return interrupted();
-  for (const Diagnostic& d : r.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  print_diagnostics(r.diagnostics);
   if (!r.ok()) return kExitFailure;
   if (r.opened_vibroimage) {
     std::fprintf(stderr, "%s: this PNG already holds a vibroimage: opened as one, not imported as a picture\n",

@@ -9,6 +9,7 @@
 #include "storage/image_io.hpp"
 #include "storage/image_summary.hpp"
 #include "storage/number_text.hpp"
+#include "storage/print_diagnostics.hpp"
 
 namespace vimg::cli {
 
@@ -25,7 +26,7 @@ int run_info(const std::string& file, const std::string& actuator) {
     if (!felt) return kExitFailure;
   }
   const LoadResult loaded = load_image_file(file);
-  for (const Diagnostic& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) return kExitFailure;
   const Image& image = *loaded.image;
   const ImageSummary s = summarize(image);

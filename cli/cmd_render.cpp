@@ -25,6 +25,7 @@
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
 #include "storage/file_extension.hpp"
+#include "storage/print_diagnostics.hpp"
 
 namespace vimg::cli {
 
@@ -78,7 +79,7 @@ int run_render(const RenderArgs& a) {
   if (auto code = check_render_args(a)) return *code;
 
   const LoadResult loaded = load_image_file(a.image);
-  for (const Diagnostic& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) {
     if (loaded.diagnostics.empty()) std::fprintf(stderr, "%s: error: cannot load the image\n", a.image.c_str());
     return kExitFailure;

@@ -8,6 +8,7 @@
 
 #include "cli/command.hpp"
 #include "cli/serve_study.hpp"
+#include "storage/print_diagnostics.hpp"
 #include "storage/study/study_file.hpp"
 #include "storage/study/served_url_file.hpp"
 #include "web/server/lan_address.hpp"
@@ -23,10 +24,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kProgram = "vimg serve";
-
-void print(const std::vector<Diagnostic>& diagnostics) {
-  for (const Diagnostic& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
-}
 
 // The address pages reach the server at: the LAN's with --lan (127.0.0.1 when there is none),
 // https with --tls.
@@ -48,7 +45,7 @@ std::string participant_link(const std::string& base_url, const std::string& par
 
 int run_serve_study(const StudyServeArgs& a, const sigset_t& stop_signals) {
   const StudyFileResult<MatchingStudy> loaded = load_matching_study(a.study);
-  print(loaded.diagnostics);
+  print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) return kExitFailure;
   std::error_code ec;
   if (!fs::is_directory(a.results, ec)) {
@@ -81,7 +78,7 @@ int run_serve_study(const StudyServeArgs& a, const sigset_t& stop_signals) {
     std::vector<Diagnostic> pages = add_study_pages(site.path());
     built.insert(built.end(), pages.begin(), pages.end());
   }
-  print(built);
+  print_diagnostics(built);
   if (has_errors(built)) return kExitFailure;
 
   web::StudyService service(*loaded.study, names, a.results, std::get<web::StudyKeys>(keys));

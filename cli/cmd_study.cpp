@@ -15,6 +15,7 @@
 #include "cli/serve_study.hpp"
 #include "storage/atomic_file.hpp"
 #include "storage/file_extension.hpp"
+#include "storage/print_diagnostics.hpp"
 #include "storage/study/trial_log.hpp"
 #include "storage/study/served_url_file.hpp"
 #include "study/report_inputs.hpp"
@@ -50,7 +51,7 @@ int run_report(const ReportArgs& a) {
 
   const study::ReportInputs inputs = study::read_report_inputs({a.trials.begin(), a.trials.end()},
                                                                {a.predicted.begin(), a.predicted.end()});
-  for (const Diagnostic& d : inputs.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  print_diagnostics(inputs.diagnostics);
   if (!inputs.ok()) {
     std::fprintf(stderr, "%s: %s not written\n", kProgram, a.out.c_str());
     return kExitFailure;
@@ -61,7 +62,7 @@ int run_report(const ReportArgs& a) {
   }
   std::vector<Diagnostic> warnings;
   const study::StudyReport report = study::make_study_report(inputs, warnings);
-  for (const Diagnostic& d : warnings) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  print_diagnostics(warnings);
   const std::string text = ext == ".json"   ? study::report_json(report)
                            : ext == ".html" ? study::report_html(report)
                                             : study::report_markdown(report);

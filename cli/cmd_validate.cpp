@@ -9,6 +9,7 @@
 #include "cli/felt_report.hpp"
 #include "storage/image_io.hpp"
 #include "storage/limits.hpp"
+#include "storage/print_diagnostics.hpp"
 
 namespace vimg::cli {
 
@@ -28,11 +29,11 @@ int run_validate(const ValidateArgs& a) {
   bool all_valid = true;
   for (const std::string& arg : a.files) {
     const LoadResult result = load_image_file(arg);
-    for (const Diagnostic& d : result.diagnostics) std::printf("%s\n", d.to_string().c_str());
+    print_diagnostics(result.diagnostics, stdout);
     if (result.ok() && felt) {
       DiagnosticList warnings(arg, DiagnosticList::Order::by_line);
       add_felt_warnings(*result.image, *felt, warnings);
-      for (const Diagnostic& d : warnings.take()) std::printf("%s\n", d.to_string().c_str());
+      print_diagnostics(warnings.take(), stdout);
     }
     if (result.ok()) {
       std::printf("%s: ok\n", arg.c_str());

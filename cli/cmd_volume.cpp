@@ -10,15 +10,12 @@
 #include "storage/atomic_file.hpp"
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
+#include "storage/print_diagnostics.hpp"
 #include "storage/volume/study_writer.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
 namespace vimg::cli {
 namespace {
-
-void print_diagnostics(const std::vector<Diagnostic>& diagnostics) {
-  for (const auto& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
-}
 
 int make_study(std::uint64_t seed, const std::string& out) {
   const StudySet set = make_study_set(seed);

@@ -7,6 +7,7 @@
 
 #include "cli/command.hpp"
 #include "web/site_builder/web_site.hpp"
+#include "storage/print_diagnostics.hpp"
 
 namespace vimg::cli {
 
@@ -25,7 +26,7 @@ int run_web(const WebArgs& a) {
   for (const std::string& e : profile_errors) std::fprintf(stderr, "%s\n", e.c_str());
   if (!options) return kExitFailure;
   const std::vector<Diagnostic> diagnostics = build_web_site(images, *options, a.out);
-  for (const Diagnostic& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  print_diagnostics(diagnostics);
   if (has_errors(diagnostics)) return kExitFailure;
   std::printf("%s: a site of %zu image%s; a browser loads it from a server: vimg serve %s\n", a.out.c_str(),
               images.size(), images.size() == 1 ? "" : "s", a.out.c_str());

@@ -11,6 +11,7 @@
 #include <numeric>
 
 #include "realtime/clock.hpp"
+#include "storage/print_diagnostics.hpp"
 #include "storage/touch_settings_file.hpp"
 
 namespace vimg::editor {
@@ -57,7 +58,7 @@ EditorApp::EditorApp(EditorOptions options)
 
 void EditorApp::load_touch_settings() {
   const TouchSettingsRead read = read_touch_settings(touch_settings_path_);
-  for (const Diagnostic& d : read.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  print_diagnostics(read.diagnostics);
   TouchCompensation& touch = playback_.touch();
   if (read.settings.latency_ms && !options_.touch_latency_given) touch.panel_latency_s = *read.settings.latency_ms * 1e-3;
   if (read.settings.prediction && !options_.touch_prediction_given) touch.enabled = *read.settings.prediction;

@@ -7,7 +7,7 @@
 #include "storage/file_extension.hpp"
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
-#include "storage/read_file.hpp"
+#include "storage/load_file.hpp"
 #include "storage/text_trim.hpp"
 
 namespace vimg {
@@ -157,11 +157,10 @@ SignalReadResult parse_csv_signal(std::string_view text, const std::string& file
 }
 
 SignalReadResult read_signal_file(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  const FileReadResult read = read_regular_file(path, kMaxSignalFileBytes);
-  if (!read.bytes) return failure(name, 0, read.error);
-  if (lower_extension(path) == ".wav") return parse_wav_signal(*read.bytes, name);
-  return parse_csv_signal(*read.bytes, name);
+  const bool wav = lower_extension(path) == ".wav";
+  return load_file<SignalReadResult>(path, kMaxSignalFileBytes, [wav](std::string_view bytes, const std::string& name) {
+    return wav ? parse_wav_signal(bytes, name) : parse_csv_signal(bytes, name);
+  });
 }
 
 }  // namespace vimg

@@ -7,7 +7,7 @@
 #include "primitives/touch_prediction/touch_latency_defaults.hpp"
 #include "storage/atomic_file.hpp"
 #include "storage/number_text.hpp"
-#include "storage/read_file.hpp"
+#include "storage/load_file.hpp"
 #include "storage/text_trim.hpp"
 
 namespace vimg {
@@ -72,15 +72,9 @@ TouchSettingsRead parse_touch_settings(std::string_view text, const std::string&
 TouchSettingsRead read_touch_settings(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return {};
-  FileReadResult read = read_regular_file(path, kMaxTouchSettingsBytes);
-  if (!read.bytes) {
-    TouchSettingsRead out;
-    DiagnosticList problems(path.string());
-    problems.error(0, read.error);
-    out.diagnostics = problems.take();
-    return out;
-  }
-  return parse_touch_settings(*read.bytes, path.string());
+  return load_file<TouchSettingsRead>(path, kMaxTouchSettingsBytes, [](std::string_view text, const std::string& name) {
+    return parse_touch_settings(text, name);
+  });
 }
 
 std::string touch_settings_text(double latency_ms, bool prediction, std::string_view program) {

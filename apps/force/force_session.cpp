@@ -15,16 +15,13 @@
 #include "realtime/clock.hpp"
 #include "storage/atomic_file.hpp"
 #include "storage/number_text.hpp"
+#include "storage/print_diagnostics.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
 namespace vimg::force_app {
 namespace {
 
 void error(const std::string& message) { std::fprintf(stderr, "vimg-force: error: %s\n", message.c_str()); }
-
-void print_diagnostics(const std::vector<Diagnostic>& diagnostics) {
-  for (const auto& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
-}
 
 // A file written at the end must have a folder now, so that a typo fails before the device moves.
 bool folder_exists_for(const std::string& file) {

@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "storage/print_diagnostics.hpp"
 #include "storage/study/location_marks_file.hpp"
 #include "apps/force/location_study_port.hpp"
 #include "apps/force/location_study_trial.hpp"
@@ -32,10 +33,6 @@ constexpr const char* kTrialFileSuffix = "location";
 constexpr int kMaxFaultsInARow = 3;
 
 void error(const std::string& message) { std::fprintf(stderr, "vimg-force: error: %s\n", message.c_str()); }
-
-void print_diagnostics(const std::vector<Diagnostic>& diagnostics) {
-  for (const auto& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
-}
 
 // Enter on the terminal stands in for button 0 (for a device without buttons). Read without
 // blocking from the control thread; only when stdin is a terminal (a pipe or a file would press by

@@ -24,6 +24,7 @@
 #include "cmdline/exit_codes.hpp"
 #include "hal/force/force_device_opener.hpp"
 #include "hal/rest_on_exit.hpp"
+#include "storage/print_diagnostics.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
 namespace {
@@ -93,7 +94,7 @@ int main(int argc, char** argv) {
   vimg::VolumeSceneLoadOptions load_options;
   load_options.allow_files_outside_scene_folder = args.allow_outside_files;
   vimg::VolumeSceneLoadResult loaded = vimg::load_volume_scene_file(scene_path, load_options);
-  for (const auto& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+  vimg::print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) return 1;
   const vimg::VolumeScene& scene = loaded.loaded->scene;
   const vimg::ScalarGrid* scalar = loaded.loaded->scalars.empty() ? nullptr : loaded.loaded->scalars.begin()->second.get();
@@ -117,7 +118,7 @@ int main(int argc, char** argv) {
   if (!args.device.empty()) {
     std::vector<vimg::Diagnostic> problems;
     std::optional<std::vector<vimg::HandPathPoint>> hand = vimg::simulated_hand_path(args.path_file, problems);
-    for (const auto& d : problems) std::fprintf(stderr, "%s\n", d.to_string().c_str());
+    vimg::print_diagnostics(problems);
     if (!hand) return 1;
     vimg::OpenedForceDevice opened = vimg::open_force_device(
         args.device, scene.device, std::move(*hand),

@@ -23,6 +23,7 @@
 #include "player/scene.hpp"
 #include "realtime/realtime_priority.hpp"
 #include "storage/image_io.hpp"
+#include "storage/print_diagnostics.hpp"
 
 namespace vimg::player_app {
 
@@ -55,7 +56,7 @@ int run(const PlayerArgs& args) {
     return calibrate(profile, *spec.spec);
   }
   const LoadResult loaded = load_image_file(args.image_path);
-  for (const auto& diagnostic : loaded.diagnostics) std::fprintf(stderr, "%s\n", diagnostic.to_string().c_str());
+  print_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) return 1;
   const Image& image = *loaded.image;
 

@@ -13,6 +13,7 @@
 #include "apps/vimg-player/player_setup.hpp"
 #include "apps/vimg-player/study_masking.hpp"
 #include "storage/gesture_csv.hpp"
+#include "storage/print_diagnostics.hpp"
 #include "storage/study/scripted_responses.hpp"
 #include "apps/vimg-player/study_session.hpp"
 #include "cmdline/exit_codes.hpp"
@@ -20,14 +21,6 @@
 #include "player/actuator_sink.hpp"
 
 namespace vimg::player_app {
-
-namespace {
-
-void print(const std::vector<Diagnostic>& diagnostics) {
-  for (const auto& d : diagnostics) std::fprintf(stderr, "%s\n", d.to_string().c_str());
-}
-
-}  // namespace
 
 StudyScreenView StudySession::view(const study::StudyFlow& flow, bool scripted) const {
   StudyScreenView v;
@@ -75,7 +68,7 @@ int StudySession::finish(const study::StudyFlow& flow) const {
 int run_study(const PlayerArgs& args) {
   // 1. The study.
   StudyMaterialResult loaded = load_study_material(*args.study_path, args.participant);
-  print(loaded.diagnostics);
+  print_diagnostics(loaded.diagnostics);
   if (!loaded.material) return 1;
   const StudyMaterial& material = *loaded.material;
 
@@ -85,7 +78,7 @@ int run_study(const PlayerArgs& args) {
   Gesture gesture;
   if (scripted) {
     const ResponsesResult responses = load_responses(*args.responses_path, material.stems, study::trial_sets(material.plan));
-    print(responses.diagnostics);
+    print_diagnostics(responses.diagnostics);
     const GestureParseResult rubbing = load_gesture_file(*args.gesture_path);
     for (const auto& error : rubbing.errors) std::fprintf(stderr, "%s\n", error.c_str());
     if (rubbing.ok() && rubbing.gesture->strokes.empty()) {
@@ -103,11 +96,11 @@ int run_study(const PlayerArgs& args) {
   log_options.restart = args.restart;
   auto opened = TrialLog::open(args.results_dir, args.participant, "trials", kMatchingTrialHeader, log_options);
   if (auto* problems = std::get_if<std::vector<Diagnostic>>(&opened)) {
-    print(*problems);
+    print_diagnostics(*problems);
     return 1;
   }
   TrialLog& log = std::get<TrialLog>(opened);
-  print(log.warnings());
+  print_diagnostics(log.warnings());
 
   // 4. The actuator.
   PlayerActuator actuator;  // whatever happens below, the actuator ends at rest

@@ -3,7 +3,7 @@
 #include "storage/csv_lines.hpp"
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
-#include "storage/read_file.hpp"
+#include "storage/load_file.hpp"
 
 namespace vimg {
 namespace {
@@ -83,13 +83,9 @@ MarkTimesResult parse_mark_times(std::string_view text, const std::string& file_
 }
 
 MarkTimesResult load_mark_times(const std::filesystem::path& file, std::size_t total_trials) {
-  const FileReadResult read = read_regular_file(file, kMaxCsvFileBytes);
-  if (!read.bytes) {
-    MarkTimesResult result;
-    result.diagnostics.push_back({Diagnostic::Severity::error, file.string(), 0, read.error});
-    return result;
-  }
-  return parse_mark_times(*read.bytes, file.string(), total_trials);
+  return load_file<MarkTimesResult>(file, kMaxCsvFileBytes, [&](std::string_view text, const std::string& name) {
+    return parse_mark_times(text, name, total_trials);
+  });
 }
 
 }  // namespace vimg

@@ -3,7 +3,7 @@
 #include <array>
 
 #include "storage/limits.hpp"
-#include "storage/read_file.hpp"
+#include "storage/load_file.hpp"
 #include "storage/study/study_file.hpp"
 #include "storage/study/study_xml.hpp"
 
@@ -81,15 +81,9 @@ StudyFileResult<LocationStudy> parse_location_study(std::string_view xml, const 
 }
 
 StudyFileResult<LocationStudy> load_location_study(const std::filesystem::path& file) {
-  const FileReadResult text = read_regular_file(file, kMaxStudyFileBytes);
-  if (!text.bytes) {
-    StudyFileResult<LocationStudy> result;
-    DiagnosticList list(file.string());
-    list.error(0, text.error);
-    result.diagnostics = list.take();
-    return result;
-  }
-  return parse_location_study(*text.bytes, file.string());
+  return load_file<StudyFileResult<LocationStudy>>(file, kMaxStudyFileBytes, [](std::string_view text, const std::string& name) {
+    return parse_location_study(text, name);
+  });
 }
 
 }  // namespace vimg

@@ -4,7 +4,7 @@
 
 #include "storage/limits.hpp"
 #include "storage/named_file.hpp"
-#include "storage/read_file.hpp"
+#include "storage/load_file.hpp"
 #include "storage/study/study_file.hpp"
 #include "storage/study/study_names.hpp"
 #include "storage/study/study_xml.hpp"
@@ -203,15 +203,9 @@ StudyFileResult<MatchingStudy> parse_matching_study(std::string_view xml, const 
 }
 
 StudyFileResult<MatchingStudy> load_matching_study(const std::filesystem::path& file, bool allow_outside_files) {
-  const FileReadResult text = read_regular_file(file, kMaxStudyFileBytes);
-  if (!text.bytes) {
-    StudyFileResult<MatchingStudy> result;
-    DiagnosticList list(file.string());
-    list.error(0, text.error);
-    result.diagnostics = list.take();
-    return result;
-  }
-  return parse_matching_study(*text.bytes, file.string(), file.parent_path(), allow_outside_files);
+  return load_file<StudyFileResult<MatchingStudy>>(file, kMaxStudyFileBytes, [&](std::string_view text, const std::string& name) {
+    return parse_matching_study(text, name, file.parent_path(), allow_outside_files);
+  });
 }
 
 }  // namespace vimg

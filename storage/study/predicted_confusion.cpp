@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "storage/json_reader.hpp"
-#include "storage/read_file.hpp"
+#include "storage/load_file.hpp"
 #include "storage/study/study_file.hpp"
 
 namespace vimg {
@@ -96,13 +96,9 @@ PredictedLoadResult parse_predicted_confusion(std::string_view json, const std::
 }
 
 PredictedLoadResult load_predicted_confusion(const std::filesystem::path& file) {
-  const FileReadResult read = read_regular_file(file, kMaxPredictedJsonBytes);
-  if (!read.bytes) {
-    PredictedLoadResult result;
-    result.diagnostics.push_back(Diagnostic{Diagnostic::Severity::error, file.string(), 0, read.error});
-    return result;
-  }
-  return parse_predicted_confusion(*read.bytes, file.string());
+  return load_file<PredictedLoadResult>(file, kMaxPredictedJsonBytes, [](std::string_view text, const std::string& name) {
+    return parse_predicted_confusion(text, name);
+  });
 }
 
 }  // namespace vimg

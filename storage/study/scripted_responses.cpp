@@ -4,7 +4,7 @@
 
 #include "storage/csv_lines.hpp"
 #include "storage/limits.hpp"
-#include "storage/read_file.hpp"
+#include "storage/load_file.hpp"
 #include "storage/text_trim.hpp"
 
 namespace vimg {
@@ -107,13 +107,9 @@ ResponsesResult parse_responses(std::string_view text, const std::string& file_n
 
 ResponsesResult load_responses(const std::filesystem::path& csv, const std::vector<std::vector<std::string>>& set_stems,
                                const std::vector<std::size_t>& trial_sets) {
-  const FileReadResult read = read_regular_file(csv, kMaxCsvFileBytes);
-  if (!read.bytes) {
-    ResponsesResult result;
-    result.diagnostics.push_back(Diagnostic{Diagnostic::Severity::error, csv.string(), 0, read.error});
-    return result;
-  }
-  return parse_responses(*read.bytes, csv.string(), set_stems, trial_sets);
+  return load_file<ResponsesResult>(csv, kMaxCsvFileBytes, [&](std::string_view text, const std::string& name) {
+    return parse_responses(text, name, set_stems, trial_sets);
+  });
 }
 
 }  // namespace vimg

@@ -8,6 +8,7 @@
 
 #include "storage/csv_lines.hpp"
 #include "storage/limits.hpp"
+#include "storage/load_file.hpp"
 #include "storage/read_file.hpp"
 #include "storage/study/trial_text.hpp"
 
@@ -128,15 +129,9 @@ TrialText<Row> parse_table(std::string_view text, const std::string& file_name, 
 
 template <class Row>
 TrialTableResult<Row> read_file(const std::filesystem::path& csv, TrialText<Row> (*parse)(std::string_view, const std::string&)) {
-  const FileReadResult text = read_regular_file(csv, kMaxTrialFileBytes);
-  if (!text.bytes) {
-    TrialTableResult<Row> result;
-    DiagnosticList list(csv.string());
-    list.error(0, text.error);
-    result.diagnostics = list.take();
-    return result;
-  }
-  return parse(*text.bytes, csv.string()).table;
+  return load_file<TrialTableResult<Row>>(csv, kMaxTrialFileBytes, [parse](std::string_view text, const std::string& name) {
+    return parse(text, name).table;
+  });
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 #include "storage/csv_lines.hpp"
 #include "storage/limits.hpp"
 #include "storage/number_text.hpp"
-#include "storage/read_file.hpp"
+#include "storage/load_file.hpp"
 
 namespace vimg {
 
@@ -82,13 +82,9 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
 }
 
 ProbePathParseResult load_probe_path_file(const std::filesystem::path& file) {
-  const FileReadResult read = read_regular_file(file, kMaxCsvFileBytes);
-  if (!read.bytes) {
-    ProbePathParseResult result;
-    result.diagnostics.push_back({Diagnostic::Severity::error, file.string(), 0, read.error});
-    return result;
-  }
-  return parse_probe_path_csv(*read.bytes, file.string());
+  return load_file<ProbePathParseResult>(file, kMaxCsvFileBytes, [](std::string_view text, const std::string& name) {
+    return parse_probe_path_csv(text, name);
+  });
 }
 
 std::optional<std::size_t> probe_render_rows(double duration_s, double rate_hz) {

@@ -99,7 +99,7 @@ TEST(SvgBounds, PathsOfManyNestedSubpathsAreRefusedAtTheOutlineTestLimitWithinTh
   for (const auto& [name, svg] : {std::pair{"nested.svg", paths_of(200, nested, "nonzero")},
                                   std::pair{"holed.svg", paths_of(20, holed, "evenodd")}}) {
     const test::ChildOutcome outcome = test::run_bounded(
-        [&] {
+        [&svg = svg, &name = name] {
           const ImportResult r = import_svg(svg, name, {});
           return r.ok() ? std::string("imported") : errors_of(r);
         },

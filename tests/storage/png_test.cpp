@@ -86,7 +86,7 @@ TEST(Png, SizeAndPhysGiveTheTrueScale) {
     if (type != "pHYs") continue;
     found = true;
     ASSERT_EQ(data.size(), 9u);
-    const auto u = [&](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(data[i])); };
+    const auto u = [&bytes = data](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])); };
     EXPECT_EQ(u(0) << 24 | u(1) << 16 | u(2) << 8 | u(3), 10000u) << "10 px/mm is 10000 px/m";
     EXPECT_EQ(u(4) << 24 | u(5) << 16 | u(6) << 8 | u(7), 10000u);
     EXPECT_EQ(u(8), 1u) << "unit: metre";

@@ -96,7 +96,9 @@ std::vector<std::vector<double>> run_scipy(const std::string& cases) {
     std::istringstream fields(line);
     std::vector<double> row;
     std::string field;
-    while (fields >> field) row.push_back(std::stod(field));
+    // strtod, not stod: SciPy prints p-values down to the subnormal range (4.9e-324), which stod
+    // refuses as out of range.
+    while (fields >> field) row.push_back(std::strtod(field.c_str(), nullptr));
     rows.push_back(row);
   }
   return rows;

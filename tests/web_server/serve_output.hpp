@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
@@ -30,34 +31,7 @@ class ServeOutput {
  public:
   // `vimg serve ARGS... --port 0` in `dir` (VIMG_WEB_ASSETS=dir/assets, TMPDIR=dir/tmp).
   ServeOutput(const std::vector<std::string>& args, const std::filesystem::path& dir)
-      : out_(dir / "serve.stdout"), err_(dir / "serve.stderr") {
-    std::filesystem::create_directories(dir / "tmp");
-    pid_ = fork();
-    if (pid_ == 0) {
-      const int out = open(out_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      const int err = open(err_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      dup2(out, STDOUT_FILENO);
-      dup2(err, STDERR_FILENO);
-      setenv("VIMG_WEB_ASSETS", (dir / "assets").c_str(), 1);
-      setenv("TMPDIR", (dir / "tmp").c_str(), 1);
-      std::vector<std::string> all{kVimg, "serve"};
-      all.insert(all.end(), args.begin(), args.end());
-      all.insert(all.end(), {"--port", "0"});
-      std::vector<char*> argv;
-      for (std::string& a : all) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      execv(kVimg.c_str(), argv.data());
-      _exit(127);
-    }
-  }
-  ~ServeOutput() {
-    if (pid_ > 0 && !reaped_) {
-      kill(pid_, SIGKILL);
-      waitpid(pid_, nullptr, 0);
-    }
-  }
-  ServeOutput(const ServeOutput&) = delete;
-  ServeOutput& operator=(const ServeOutput&) = delete;
+      : out_(dir / "serve.stdout"), err_(dir / "serve.stderr"), child_(start(args, dir, out_, err_)) {}
 
   std::string out() const { return file_text(out_); }
   std::string err() const { return file_text(err_); }
@@ -79,31 +53,32 @@ class ServeOutput {
     return std::stoi(text.substr(colon + 1, slash - colon - 1));
   }
 
-  int stop_with(int signal_number) {
-    kill(pid_, signal_number);
-    int status = 0;
-    waitpid(pid_, &status, 0);
-    reaped_ = true;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
+  int stop_with(int signal_number) { return child_->stop_with(signal_number); }
 
  private:
+  static std::unique_ptr<ServeChild> start(const std::vector<std::string>& args, const std::filesystem::path& dir,
+                                           const std::filesystem::path& out, const std::filesystem::path& err) {
+    std::filesystem::create_directories(dir / "tmp");
+    const int out_fd = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    const int err_fd = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    auto child = std::make_unique<ServeChild>(args, dir / "assets", dir / "tmp", out_fd, err_fd);
+    close(out_fd);
+    close(err_fd);
+    return child;
+  }
+
   bool wait_for(const std::filesystem::path& file, const std::string& text) {
     const auto give_up = std::chrono::steady_clock::now() + kHangBound;
     while (std::chrono::steady_clock::now() < give_up) {
       if (file_text(file).find(text) != std::string::npos) return true;
-      siginfo_t info{};
-      if (waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid_) {
-        return file_text(file).find(text) != std::string::npos;  // ended (left for stop_with or the destructor)
-      }
+      if (child_->ended()) return file_text(file).find(text) != std::string::npos;
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     return false;
   }
 
   std::filesystem::path out_, err_;
-  pid_t pid_ = -1;
-  bool reaped_ = false;
+  std::unique_ptr<ServeChild> child_;
 };
 
 }  // namespace vimg::test

@@ -25,15 +25,18 @@ inline void write_stand_in_assets(const std::filesystem::path& dir) {
   }
 }
 
-class ServeProcess {
+// The child process itself: `vimg serve ARGS... --port 0` with VIMG_WEB_ASSETS=assets and
+// TMPDIR=tmp, its stdout and stderr on the given descriptors (-1 leaves that one inherited; the
+// child closes nothing else of the test's, every descriptor here is opened close-on-exec). Killed
+// and reaped when it goes out of scope, unless stop_with() did that.
+class ServeChild {
  public:
-  // Starts `vimg serve ARGS... --port 0` with VIMG_WEB_ASSETS=assets and TMPDIR=tmp.
-  ServeProcess(const std::vector<std::string>& args, const std::filesystem::path& assets, const std::filesystem::path& tmp) {
-    int out[2];
-    if (pipe2(out, O_CLOEXEC) != 0) return;
+  ServeChild(const std::vector<std::string>& args, const std::filesystem::path& assets, const std::filesystem::path& tmp,
+             int stdout_fd, int stderr_fd = -1) {
     pid_ = fork();
     if (pid_ == 0) {
-      dup2(out[1], STDOUT_FILENO);
+      if (stdout_fd >= 0) dup2(stdout_fd, STDOUT_FILENO);
+      if (stderr_fd >= 0) dup2(stderr_fd, STDERR_FILENO);
       setenv("VIMG_WEB_ASSETS", assets.c_str(), 1);
       setenv("TMPDIR", tmp.c_str(), 1);
       std::vector<std::string> all{kVimg, "serve"};
@@ -45,15 +48,45 @@ class ServeProcess {
       execv(kVimg.c_str(), argv.data());
       _exit(127);
     }
-    close(out[1]);
-    out_fd_ = out[0];
   }
-  ~ServeProcess() {
+  ~ServeChild() {
     if (pid_ > 0 && !reaped_) {
       kill(pid_, SIGKILL);
       waitpid(pid_, nullptr, 0);
     }
-    if (out_fd_ >= 0) close(out_fd_);
+  }
+  ServeChild(const ServeChild&) = delete;
+  ServeChild& operator=(const ServeChild&) = delete;
+
+  // Whether the child has ended (it stays unreaped, for stop_with() or the destructor).
+  bool ended() const {
+    siginfo_t info{};
+    return waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid_;
+  }
+
+  // Sends the signal and returns the exit status (-1 if a signal killed it).
+  int stop_with(int signal_number) {
+    kill(pid_, signal_number);
+    int status = 0;
+    waitpid(pid_, &status, 0);
+    reaped_ = true;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  bool reaped_ = false;
+};
+
+// The server with its stdout on a pipe that wait_for_port() reads.
+class ServeProcess {
+ public:
+  ServeProcess(const std::vector<std::string>& args, const std::filesystem::path& assets, const std::filesystem::path& tmp)
+      : pipe_(make_pipe()), child_(args, assets, tmp, pipe_.write) {
+    close(pipe_.write);
+  }
+  ~ServeProcess() {
+    if (pipe_.read >= 0) close(pipe_.read);
   }
   ServeProcess(const ServeProcess&) = delete;
   ServeProcess& operator=(const ServeProcess&) = delete;
@@ -68,26 +101,27 @@ class ServeProcess {
         return std::stoi(out_.substr(at + prefix.size()));
       }
       char buffer[1024];
-      const ssize_t n = read(out_fd_, buffer, sizeof buffer);
+      const ssize_t n = read(pipe_.read, buffer, sizeof buffer);
       if (n <= 0) return 0;
       out_.append(buffer, static_cast<std::size_t>(n));
     }
   }
   const std::string& printed() const { return out_; }
 
-  // Sends the signal and returns the exit status (-1 if a signal killed it).
-  int stop_with(int signal_number) {
-    kill(pid_, signal_number);
-    int status = 0;
-    waitpid(pid_, &status, 0);
-    reaped_ = true;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
+  int stop_with(int signal_number) { return child_.stop_with(signal_number); }
 
  private:
-  pid_t pid_ = -1;
-  int out_fd_ = -1;
-  bool reaped_ = false;
+  struct Pipe {
+    int read = -1;
+    int write = -1;
+  };
+  static Pipe make_pipe() {
+    int fds[2];
+    if (pipe2(fds, O_CLOEXEC) != 0) return {};
+    return {fds[0], fds[1]};
+  }
+  Pipe pipe_;
+  ServeChild child_;
   std::string out_;
 };
 
