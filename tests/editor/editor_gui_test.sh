@@ -55,8 +55,12 @@ cat >"$art/play.vimg" <<'VIMG'
 </vibroimage>
 VIMG
 current=play
+# Prediction off: this check is the live path from pointer events to the drive (dead reckoning).
+# The touch predictor (on by default; tested on real traces in tests/primitives and tests/player)
+# leads the recorded events by its horizon by design, and further on xdotool's pointer, which
+# comes in bursts of two or three events at one instant 30-40 ms apart: a stop-and-go history.
 start play "$art/play.vimg" --play --output "wav:$art/play.wav" --record-gesture "$art/play_gesture.csv" \
-  --recovery-dir "$art/recovery-play"
+  --recovery-dir "$art/recovery-play" --touch-prediction off
 move_mm 10 30; sleep 0.3
 xdotool mousedown 1; sleep 0.1
 x0=$(px 10); x1=$(px 70); y=$(py 30)
