@@ -72,9 +72,7 @@ TouchSettingsRead parse_touch_settings(std::string_view text, const std::string&
 TouchSettingsRead read_touch_settings(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return {};
-  return load_file<TouchSettingsRead>(path, kMaxTouchSettingsBytes, [](std::string_view text, const std::string& name) {
-    return parse_touch_settings(text, name);
-  });
+  return load_file<TouchSettingsRead>(path, kMaxTouchSettingsBytes, parse_touch_settings);
 }
 
 std::string touch_settings_text(double latency_ms, bool prediction, std::string_view program) {

@@ -81,9 +81,7 @@ StudyFileResult<LocationStudy> parse_location_study(std::string_view xml, const 
 }
 
 StudyFileResult<LocationStudy> load_location_study(const std::filesystem::path& file) {
-  return load_file<StudyFileResult<LocationStudy>>(file, kMaxStudyFileBytes, [](std::string_view text, const std::string& name) {
-    return parse_location_study(text, name);
-  });
+  return load_file<StudyFileResult<LocationStudy>>(file, kMaxStudyFileBytes, parse_location_study);
 }
 
 }  // namespace vimg

@@ -96,9 +96,7 @@ PredictedLoadResult parse_predicted_confusion(std::string_view json, const std::
 }
 
 PredictedLoadResult load_predicted_confusion(const std::filesystem::path& file) {
-  return load_file<PredictedLoadResult>(file, kMaxPredictedJsonBytes, [](std::string_view text, const std::string& name) {
-    return parse_predicted_confusion(text, name);
-  });
+  return load_file<PredictedLoadResult>(file, kMaxPredictedJsonBytes, parse_predicted_confusion);
 }
 
 }  // namespace vimg

@@ -82,9 +82,7 @@ ProbePathParseResult parse_probe_path_csv(std::string_view text, const std::stri
 }
 
 ProbePathParseResult load_probe_path_file(const std::filesystem::path& file) {
-  return load_file<ProbePathParseResult>(file, kMaxCsvFileBytes, [](std::string_view text, const std::string& name) {
-    return parse_probe_path_csv(text, name);
-  });
+  return load_file<ProbePathParseResult>(file, kMaxCsvFileBytes, parse_probe_path_csv);
 }
 
 std::optional<std::size_t> probe_render_rows(double duration_s, double rate_hz) {
