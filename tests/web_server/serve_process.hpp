@@ -4,14 +4,18 @@
 // stand-ins (VIMG_WEB_ASSETS), so that no Emscripten build is needed; TMPDIR is the test's own
 // folder, so that the temporary site can be looked at.
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include "tests/web_server/raw_http.hpp"
 
 namespace vimg::test {
 
@@ -92,14 +96,18 @@ class ServeProcess {
   ServeProcess& operator=(const ServeProcess&) = delete;
 
   // Reads stdout until the line with the URL (`scheme` "http" or "https"); its port, or 0 if the
-  // process ended first.
+  // process ended first or printed no URL within kHangBound (a hang: printed() shows how far it got).
   int wait_for_port(const std::string& scheme = "http") {
     const std::string prefix = scheme + "://127.0.0.1:";
+    const auto give_up = std::chrono::steady_clock::now() + kHangBound;
     while (true) {
       const std::size_t at = out_.find(prefix);
       if (at != std::string::npos && out_.find('/', at + prefix.size()) != std::string::npos) {
         return std::stoi(out_.substr(at + prefix.size()));
       }
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - std::chrono::steady_clock::now());
+      pollfd readable{pipe_.read, POLLIN, 0};
+      if (left.count() <= 0 || ::poll(&readable, 1, static_cast<int>(left.count())) == 0) return 0;
       char buffer[1024];
       const ssize_t n = read(pipe_.read, buffer, sizeof buffer);
       if (n <= 0) return 0;
