@@ -17,6 +17,7 @@
 #include <span>
 #include <vector>
 
+#include "primitives/perception/perception_matrix.hpp"
 #include "primitives/perception/sensation_level.hpp"
 #include "primitives/perception/stsim.hpp"
 
@@ -48,9 +49,6 @@ struct PerceptualSimilarity {
 
 PerceptualSimilarity perceptual_similarity(const PerceptualFeatures& a, const PerceptualFeatures& b,
                                            const SimilarityConstants& constants = {});
-
-// Rows and columns in the order of `signals`.
-using PerceptionMatrix = std::vector<std::vector<double>>;
 
 // similarity[i][j] = perceptual_similarity(i, j).value; symmetric, 1 on the diagonal.
 PerceptionMatrix similarity_matrix(std::span<const PerceptualFeatures> signals,

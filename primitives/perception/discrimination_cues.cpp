@@ -1,0 +1,214 @@
+#include "primitives/perception/discrimination_cues.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "primitives/perception/power_spectrum.hpp"
+#include "primitives/perception/stsim.hpp"
+
+namespace vimg {
+
+namespace {
+
+constexpr std::size_t kN = kSpectrumFrameSamples;
+static_assert(kN == detail::kPowerSpectrumFrameSamples);
+constexpr std::size_t kBins = detail::kPowerSpectrumBins;
+constexpr std::size_t kHop = kN / 2;
+constexpr double kBinHz = kStSimSampleRateHz / static_cast<double>(kN);
+constexpr double kEnvelopeStepMs = 1000.0 * static_cast<double>(kEnvelopeStepSamples) / kStSimSampleRateHz;
+
+double to_db(double power) { return power > 0.0 ? 10.0 * std::log10(power) : kSilentLevelDb; }
+
+// Per bin: (full-scale displacement / threshold)^2 of each channel.
+struct ChannelGains {
+  std::array<double, kBins> pacinian{};
+  std::array<double, kBins> non_pacinian{};
+};
+
+ChannelGains channel_gains(const LevelCalibration& calibration) {
+  ChannelGains g;
+  for (std::size_t k = 1; k + 1 < kBins; ++k) {
+    const double f = static_cast<double>(k) * kBinHz;
+    if (f < kLowestFeltHz) continue;
+    const double omega = 2.0 * std::numbers::pi * f;
+    const double displacement_m = calibration.full_scale_peak_acceleration_mps2 / (omega * omega);
+    const double p = displacement_m / threshold_peak_displacement_m(f, calibration);
+    const double np = displacement_m / kNonPacinianThresholdPeakDisplacementM;
+    g.pacinian[k] = p * p;
+    g.non_pacinian[k] = np * np;
+  }
+  return g;
+}
+
+// Hann window of kEnvelopeWindowMs, weights summing to 1.
+std::vector<double> envelope_window() {
+  const auto length = static_cast<std::size_t>(kEnvelopeWindowMs * kStSimSampleRateHz / 1000.0);
+  std::vector<double> w(length);
+  double total = 0.0;
+  for (std::size_t i = 0; i < length; ++i) {
+    w[i] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(length));
+    total += w[i];
+  }
+  for (double& v : w) v /= total;
+  return w;
+}
+
+// The distance of x from the interval [low, high].
+double outside(double x, double low, double high) { return x < low ? low - x : (x > high ? x - high : 0.0); }
+
+}  // namespace
+
+double skin_threshold_peak_displacement_m(double frequency_hz, const LevelCalibration& calibration) {
+  return std::min(threshold_peak_displacement_m(frequency_hz, calibration), kNonPacinianThresholdPeakDisplacementM);
+}
+
+DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8khz, const LevelCalibration& calibration) {
+  DiscriminationFeatures f;
+  const std::size_t size = signal_8khz.size();
+  if (size == 0) return f;
+  const ChannelGains gains = channel_gains(calibration);
+
+  // Spectrum frames, centre j * kHop.
+  const std::size_t frames = (size + kHop - 1) / kHop + 1;
+  std::array<double, kBins> mean_excitation{};
+  std::array<double, kN> frame{};
+  std::array<double, kBins> power{};
+  double best_p = 0.0, best_np = 0.0, best = 0.0;
+  for (std::size_t j = 0; j < frames; ++j) {
+    const std::ptrdiff_t start = static_cast<std::ptrdiff_t>(j * kHop) - static_cast<std::ptrdiff_t>(kN / 2);
+    bool any = false;
+    for (std::size_t n = 0; n < kN; ++n) {
+      const std::ptrdiff_t i = start + static_cast<std::ptrdiff_t>(n);
+      frame[n] = (i >= 0 && static_cast<std::size_t>(i) < size) ? signal_8khz[static_cast<std::size_t>(i)] : 0.0;
+      any = any || frame[n] != 0.0;
+    }
+    if (!any) continue;
+    detail::hann_power_spectrum(frame, power);
+    double sum_p = 0.0, sum_np = 0.0, sum_e = 0.0;
+    for (std::size_t k = 1; k + 1 < kBins; ++k) {
+      const double p = power[k] * gains.pacinian[k];
+      const double np = power[k] * gains.non_pacinian[k];
+      const double e = std::max(p, np);
+      sum_p += p;
+      sum_np += np;
+      sum_e += e;
+      mean_excitation[k] += e;
+    }
+    best_p = std::max(best_p, sum_p);
+    best_np = std::max(best_np, sum_np);
+    best = std::max(best, sum_e);
+  }
+  f.pacinian_level_db = to_db(best_p);
+  f.non_pacinian_level_db = to_db(best_np);
+
+  f.level_db = std::max(0.0, to_db(best));
+
+  // Envelope: the Hann-weighted mean of x^2 around each step relative to its largest value, dB,
+  // floored where it falls below the threshold (level_db below the strongest moment).
+  const std::vector<double> window = envelope_window();
+  const std::size_t half = window.size() / 2;
+  const std::size_t steps = (size + kEnvelopeStepSamples - 1) / kEnvelopeStepSamples;
+  std::vector<double> level(steps, 0.0);
+  double peak = kSilentLevelDb;
+  for (std::size_t s = 0; s < steps; ++s) {
+    const std::size_t centre = s * kEnvelopeStepSamples;
+    double mean_square = 0.0;
+    for (std::size_t i = 0; i < window.size(); ++i) {
+      const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(centre + i) - static_cast<std::ptrdiff_t>(half);
+      if (n < 0 || static_cast<std::size_t>(n) >= size) continue;
+      const double x = signal_8khz[static_cast<std::size_t>(n)];
+      mean_square += window[i] * x * x;
+    }
+    level[s] = to_db(mean_square);
+    peak = std::max(peak, level[s]);
+  }
+  f.envelope_db.resize(steps);
+  for (std::size_t s = 0; s < steps; ++s) f.envelope_db[s] = static_cast<float>(std::max(level[s] - peak, -f.level_db));
+  // The range of the envelope within +-kTimingToleranceMs of each step (inside the signal).
+  const auto tolerance = static_cast<std::size_t>(kTimingToleranceMs / kEnvelopeStepMs);
+  f.envelope_low_db.resize(steps);
+  f.envelope_high_db.resize(steps);
+  for (std::size_t s = 0; s < steps; ++s) {
+    const std::size_t first = s > tolerance ? s - tolerance : 0;
+    const std::size_t last = std::min(steps - 1, s + tolerance);
+    const auto [low, high] = std::minmax_element(f.envelope_db.begin() + static_cast<std::ptrdiff_t>(first),
+                                                 f.envelope_db.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    f.envelope_low_db[s] = *low;
+    f.envelope_high_db[s] = *high;
+  }
+
+  // Pitch: the excitation-weighted mean of log2 f over the frame-averaged spectrum.
+  if (f.level_db > 0.0) {
+    double weight = 0.0, moment = 0.0;
+    for (std::size_t k = 1; k + 1 < kBins; ++k) {
+      weight += mean_excitation[k];
+      moment += mean_excitation[k] * std::log2(static_cast<double>(k) * kBinHz);
+    }
+    if (weight > 0.0) f.pitch_octaves = moment / weight;
+  }
+  return f;
+}
+
+std::string_view cue_name(std::size_t cue) {
+  static constexpr std::array<std::string_view, kCueCount> names = {"level", "pitch", "envelope"};
+  return cue < kCueCount ? names[cue] : std::string_view{};
+}
+
+namespace {
+
+// The largest amount by which a moment of one relative envelope lies outside the other's range
+// within +-kTimingToleranceMs; beyond a signal's end its envelope is silence (-level_db).
+double envelope_distance_db(const DiscriminationFeatures& a, const DiscriminationFeatures& b) {
+  const auto one_way = [](const DiscriminationFeatures& x, const DiscriminationFeatures& y) {
+    const std::size_t steps = std::max(x.envelope_db.size(), y.envelope_db.size());
+    const double x_silent = -x.level_db;
+    const double y_silent = -y.level_db;
+    const std::size_t y_size = y.envelope_db.size();
+    const auto tolerance = static_cast<std::size_t>(kTimingToleranceMs / kEnvelopeStepMs);
+    double worst = 0.0;
+    for (std::size_t s = 0; s < steps; ++s) {
+      const double v = s < x.envelope_db.size() ? static_cast<double>(x.envelope_db[s]) : x_silent;
+      double low = y_silent, high = y_silent;
+      if (s < y_size) {
+        low = y.envelope_low_db[s];
+        high = y.envelope_high_db[s];
+      }
+      // Near y's start and end its range takes in the silence before and after it.
+      if (s < tolerance || s + tolerance >= y_size) {
+        low = std::min(low, y_silent);
+        high = std::max(high, y_silent);
+      }
+      worst = std::max(worst, outside(v, low, high));
+    }
+    return worst;
+  };
+  return std::max(one_way(a, b), one_way(b, a));
+}
+
+}  // namespace
+
+CueDistances cue_distances(const DiscriminationFeatures& a, const DiscriminationFeatures& b) {
+  CueDistances d{};
+  d[static_cast<std::size_t>(Cue::level)] = std::abs(a.level_db - b.level_db) / kLevelJndDb;
+  const double felt = std::min(a.level_db, b.level_db);
+  if (felt > 0.0) {
+    const double pitch_jnd_octaves = std::log2(1.0 + kFrequencyWeberFraction);
+    d[static_cast<std::size_t>(Cue::pitch)] =
+        std::abs(a.pitch_octaves - b.pitch_octaves) / pitch_jnd_octaves * std::min(1.0, felt / kPitchFullLevelDb);
+  }
+  d[static_cast<std::size_t>(Cue::envelope)] = envelope_distance_db(a, b) / kLevelJndDb;
+  return d;
+}
+
+CueMatrix cue_matrix(std::span<const DiscriminationFeatures> signals) {
+  const std::size_t n = signals.size();
+  CueMatrix m(n, std::vector<CueDistances>(n, CueDistances{}));
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) m[i][j] = m[j][i] = cue_distances(signals[i], signals[j]);
+  }
+  return m;
+}
+
+}  // namespace vimg

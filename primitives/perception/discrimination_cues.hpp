@@ -1,0 +1,93 @@
+#pragma once
+// What a person can tell apart between two vibrations, cue by cue, in just-noticeable differences
+// (docs/perception.md, "Discrimination model"). Analyse each signal once, then measure the distance
+// of every pair on each cue; discrimination_choice.hpp turns the distances into predicted confusion.
+//
+// The signal is the acceleration at the skin (|x| = 1 is LevelCalibration::full_scale, 8 kHz).
+// Two channels of touch (Bolanowski, Gescheider, Verrillo & Checkosky 1988):
+//   Pacinian (P):      detection threshold as peak displacement, U-shaped over frequency, lowest at
+//                      250 Hz (threshold_peak_displacement_m of sensation_level.hpp, 0.1 um there);
+//   non-Pacinian (NP): flat in displacement, kNonPacinianThresholdPeakDisplacementM, the floor of
+//                      the threshold below about 40 Hz.
+// A component of acceleration A at f moves the skin by A / (2 pi f)^2; divided by a channel's
+// threshold it is that channel's excitation in threshold units, and the skin feels through the
+// more sensitive channel: excitation = max(P, NP) per frequency, sensation level 10 log10 of it.
+//
+// Features of one signal:
+//   spectrum:  frames of kSpectrumFrameSamples (512 ms) under a Hann window, half a frame apart;
+//              per FFT bin the excitation (threshold units, scaled so that a steady sine at the
+//              threshold sums to 1 over its bins);
+//   level_db:  the sensation level of the strongest spectrum frame (0 when nothing is felt): the
+//              level of a steady vibration; a burst shorter than the frame's ~190 ms effective
+//              length reads lower by 10 log10(duration / 190 ms), the temporal summation of the
+//              Pacinian channel (Verrillo 1965: about 3 dB per doubling of duration);
+//   pitch:     log2 of the excitation-weighted mean log-frequency (the centroid, in octaves, of the
+//              frame-averaged excitation): a sine's own frequency; a texture's dominant one;
+//   envelope:  every kEnvelopeStepSamples (1 ms) the power of the signal around it (a Hann-shaped
+//              window kEnvelopeWindowMs wide: the skin's temporal resolution) in dB relative to its
+//              largest value, floored at -level_db (below threshold nothing is felt, so a gap in a
+//              faint vibration is shallower than in a strong one);
+//
+// Cue distances between two signals a and b, each >= 0, in JNDs, symmetric, 0 for identical:
+//   level:    |level_a - level_b| / kLevelJndDb;
+//   pitch:    |pitch_a - pitch_b| / log2(1 + kFrequencyWeberFraction), scaled by
+//             min(1, min(level_a, level_b) / kPitchFullLevelDb): pitch needs both to be felt;
+//   envelope: the largest difference of the two relative envelopes in dB, each moment against the
+//             other's range within +-kTimingToleranceMs (free exploration does not repeat its
+//             timing exactly), / kLevelJndDb: a gap, a beat, a rhythm.
+//
+// Threads: pure functions over caller-owned data.
+#include <array>
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "primitives/perception/sensation_level.hpp"
+
+namespace vimg {
+
+// Published figures behind the cues (tests/data/psychophysics/published_figures.csv).
+inline constexpr double kLevelJndDb = 2.0;               // amplitude JND: 1.65-2.98 dB (Israr, Tan & Reed 2006)
+inline constexpr double kFrequencyWeberFraction = 0.25;  // 0.13-0.38 (Israr et al. 2006), 0.2-0.35 (Goff 1967)
+inline constexpr double kNonPacinianThresholdPeakDisplacementM = 10e-6;  // NP floor below ~40 Hz
+// Reasoned constants (docs/perception.md says why).
+inline constexpr double kPitchFullLevelDb = 10.0;  // pitch is judged fully from this sensation level
+inline constexpr double kEnvelopeWindowMs = 40.0;  // temporal integration of the envelope (Hann, full width)
+inline constexpr double kTimingToleranceMs = 20.0;  // timing shifts that go unnoticed
+inline constexpr double kLowestFeltHz = 10.0;  // below: drift of the acceleration signal, not counted
+inline constexpr std::size_t kSpectrumFrameSamples = 4096;
+inline constexpr std::size_t kEnvelopeStepSamples = 8;
+
+struct DiscriminationFeatures {
+  double level_db = 0.0;                 // felt sensation level of the strongest moment, >= 0
+  double pacinian_level_db = 0.0;        // the same through the P channel alone (may be < 0)
+  double non_pacinian_level_db = 0.0;    // through the NP channel alone (may be < 0)
+  double pitch_octaves = 0.0;            // log2 of the centroid frequency in Hz (0 when nothing is felt)
+  std::vector<float> envelope_db;        // per 1 ms: dB re the strongest moment, >= -level_db
+  std::vector<float> envelope_low_db;    // per 1 ms: the least of envelope_db within +-kTimingToleranceMs
+  std::vector<float> envelope_high_db;   // the largest
+};
+
+DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8khz,
+                                              const LevelCalibration& calibration = {});
+
+inline constexpr std::size_t kCueCount = 3;
+enum class Cue : std::size_t { level = 0, pitch = 1, envelope = 2 };
+
+// "level", "pitch", "envelope"; "" for cue >= kCueCount.
+std::string_view cue_name(std::size_t cue);
+
+using CueDistances = std::array<double, kCueCount>;
+
+CueDistances cue_distances(const DiscriminationFeatures& a, const DiscriminationFeatures& b);
+
+// [presented][chosen]: cue_distances of every pair; square, zeros on the diagonal, symmetric.
+using CueMatrix = std::vector<std::vector<CueDistances>>;
+CueMatrix cue_matrix(std::span<const DiscriminationFeatures> signals);
+
+// The detection threshold of the skin (the more sensitive channel) at frequency_hz, as peak
+// displacement in m.
+double skin_threshold_peak_displacement_m(double frequency_hz, const LevelCalibration& calibration = {});
+
+}  // namespace vimg

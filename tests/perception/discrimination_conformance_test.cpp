@@ -1,0 +1,171 @@
+// The discrimination model (primitives/perception/discrimination_cues.hpp + the choice rule with its
+// default constants) against published vibrotactile psychophysics
+// (tests/data/psychophysics/published_figures.csv, README.md there): it renders the classic
+// stimuli, two at a time, and predicts how often a two-alternative trial confuses them.
+//   - the model's JND (the difference confused in 25 % of two-alternative trials) falls within the
+//     published range for frequency (Weber fraction), amplitude (dB) and gap detection (ms);
+//   - a pair as far apart as the middle of the published range is confused 18-40 % of the time;
+//   - well below a JND (5 % of frequency, 0.5 dB, a 2 ms gap) near chance (>= 0.4);
+//   - several JNDs apart (an octave, 10 dB, a 30 ms gap) rarely (<= 0.05);
+//   - the threshold: a sine below it is confused with silence half the time, one 10 dB above it
+//     rarely, and the threshold itself is the published displacement.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+
+#include "primitives/perception/discrimination_choice.hpp"
+#include "tests/perception/fixture_signals.hpp"
+#include "tests/perception/tone_signals.hpp"
+
+namespace vimg {
+namespace {
+
+using test::render_tone;
+using test::strong_actuator;
+using test::Tone;
+
+struct Range {
+  double low = 0.0;
+  double high = 0.0;
+  double middle() const { return std::sqrt(low * high); }
+};
+
+// The union of the published ranges of `quantity` whose frequency range holds frequency_hz.
+Range published(const std::string& quantity, double frequency_hz) {
+  Range r{1e300, -1e300};
+  for (const auto& row : test::read_csv_rows(std::string(VIMG_TEST_DATA_DIR) + "/psychophysics/published_figures.csv")) {
+    if (row.at("quantity") != quantity) continue;
+    if (frequency_hz < std::stod(row.at("frequency_low_hz")) || frequency_hz > std::stod(row.at("frequency_high_hz"))) continue;
+    r.low = std::min(r.low, std::stod(row.at("low")));
+    r.high = std::max(r.high, std::stod(row.at("high")));
+  }
+  EXPECT_LT(r.low, r.high) << quantity << " at " << frequency_hz << " Hz";
+  return r;
+}
+
+double confusion(const Tone& a, const Tone& b) {
+  const DiscriminationFeatures fa = analyse_discrimination(render_tone(a), strong_actuator());
+  const DiscriminationFeatures fb = analyse_discrimination(render_tone(b), strong_actuator());
+  return two_alternative_confusion(combined_distance_jnd(cue_distances(fa, fb)));
+}
+
+// The difference x in [low, high] at which `p(x)`, falling, crosses 0.25 (bisection).
+double jnd(const std::function<double(double)>& p, double low, double high) {
+  for (int i = 0; i < 40; ++i) {
+    const double mid = 0.5 * (low + high);
+    (p(mid) > 0.25 ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
+}
+
+constexpr double kFrequenciesHz[] = {25.0, 50.0, 100.0, 200.0, 300.0};
+constexpr double kLevelsDb[] = {20.0, 30.0};
+
+TEST(DiscriminationConformance, FrequencyWeberFractionIsThePublishedOne) {
+  for (double f : kFrequenciesHz) {
+    const Range wf = published("frequency_weber_fraction", f);
+    for (double sl : kLevelsDb) {
+      const Tone reference{f, sl};
+      const auto p = [&](double fraction) { return confusion(reference, Tone{f * (1.0 + fraction), sl}); };
+      const double model = jnd(p, 0.0, 1.0);
+      EXPECT_GE(model, wf.low) << f << " Hz at " << sl << " dB SL";
+      EXPECT_LE(model, wf.high) << f << " Hz at " << sl << " dB SL";
+      const double at_middle = p(wf.middle());
+      EXPECT_GE(at_middle, 0.18) << f << " Hz";
+      EXPECT_LE(at_middle, 0.40) << f << " Hz";
+      EXPECT_GE(p(0.05), 0.40) << f << " Hz: 5 % apart";
+      EXPECT_LE(p(1.0), 0.05) << f << " Hz: an octave apart";
+    }
+  }
+}
+
+TEST(DiscriminationConformance, AmplitudeJndIsThePublishedOne) {
+  for (double f : kFrequenciesHz) {
+    const Range db = published("amplitude_jnd_db", f);
+    for (double sl : kLevelsDb) {
+      const Tone reference{f, sl};
+      const auto p = [&](double step_db) { return confusion(reference, Tone{f, sl + step_db}); };
+      const double model = jnd(p, 0.0, 10.0);
+      EXPECT_GE(model, db.low) << f << " Hz at " << sl << " dB SL";
+      EXPECT_LE(model, db.high) << f << " Hz at " << sl << " dB SL";
+      const double at_middle = p(db.middle());
+      EXPECT_GE(at_middle, 0.18) << f << " Hz";
+      EXPECT_LE(at_middle, 0.40) << f << " Hz";
+      EXPECT_GE(p(0.5), 0.40) << f << " Hz: 0.5 dB apart";
+      EXPECT_LE(p(10.0), 0.05) << f << " Hz: 10 dB apart";
+    }
+  }
+}
+
+TEST(DiscriminationConformance, GapDetectionIsThePublishedOne) {
+  const Range ms = published("gap_detection_ms", 250.0);
+  for (double sl : {30.0, 40.0}) {
+    const Tone steady{250.0, sl};
+    const auto p = [&](double gap_ms) {
+      Tone gapped = steady;
+      gapped.gap_ms = gap_ms;
+      return confusion(steady, gapped);
+    };
+    const double model = jnd(p, 0.5, 30.0);
+    EXPECT_GE(model, ms.low) << sl << " dB SL";
+    EXPECT_LE(model, ms.high) << sl << " dB SL";
+    const double at_middle = p(ms.middle());
+    EXPECT_GE(at_middle, 0.18);
+    EXPECT_LE(at_middle, 0.40);
+    EXPECT_GE(p(2.0), 0.40) << "a 2 ms gap";
+    EXPECT_LE(p(30.0), 0.05) << "a 30 ms gap";
+  }
+}
+
+TEST(DiscriminationConformance, ThresholdIsThePublishedDisplacement) {
+  const Range pacinian_um = published("detection_threshold_peak_displacement_um", 250.0);
+  const Range floor_um = published("detection_threshold_peak_displacement_um", 25.0);
+  EXPECT_GE(skin_threshold_peak_displacement_m(250.0) * 1e6, pacinian_um.low);
+  EXPECT_LE(skin_threshold_peak_displacement_m(250.0) * 1e6, pacinian_um.high);
+  for (double f : {10.0, 20.0, 25.0, 40.0}) {
+    EXPECT_GE(skin_threshold_peak_displacement_m(f) * 1e6, floor_um.low) << f;
+    EXPECT_LE(skin_threshold_peak_displacement_m(f) * 1e6, floor_um.high) << f;
+  }
+  // The signal is acceleration: a sine whose acceleration is the published displacement times
+  // (2 pi f)^2, 20 dB above the published threshold, reads 20 dB within the published range.
+  for (double f : {25.0, 250.0}) {
+    const Range r = f < 100.0 ? floor_um : pacinian_um;
+    const double omega = 2.0 * std::numbers::pi * f;
+    std::vector<double> x(8000);
+    const LevelCalibration c = strong_actuator();
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      x[i] = 10.0 * r.middle() * 1e-6 * omega * omega / c.full_scale_peak_acceleration_mps2 *
+             std::sin(omega * static_cast<double>(i) / 8000.0);
+    }
+    const double level = analyse_discrimination(x, c).level_db;
+    EXPECT_GE(level, 20.0 - 20.0 * std::log10(r.high / r.middle()) - 1.0) << f;
+    EXPECT_LE(level, 20.0 + 20.0 * std::log10(r.middle() / r.low) + 1.0) << f;
+  }
+}
+
+TEST(DiscriminationConformance, BelowThresholdIsSilenceAboveItIsNot) {
+  const std::vector<double> silence(8000, 0.0);
+  for (double f : kFrequenciesHz) {
+    const auto against_silence = [&](double sl) {
+      const DiscriminationFeatures tone = analyse_discrimination(render_tone(Tone{f, sl}), strong_actuator());
+      const DiscriminationFeatures none = analyse_discrimination(silence, strong_actuator());
+      return two_alternative_confusion(combined_distance_jnd(cue_distances(tone, none)));
+    };
+    EXPECT_GE(against_silence(-3.0), 0.45) << f << " Hz, 3 dB below threshold";
+    EXPECT_LE(against_silence(10.0), 0.05) << f << " Hz, 10 dB above threshold";
+  }
+}
+
+TEST(DiscriminationConformance, PhaseIsNotFelt) {
+  for (double f : kFrequenciesHz) {
+    Tone shifted{f, 30.0};
+    shifted.phase_rad = 2.0;
+    EXPECT_GE(confusion(Tone{f, 30.0}, shifted), 0.45) << f;
+  }
+}
+
+}  // namespace
+}  // namespace vimg
