@@ -29,15 +29,17 @@
 //            between the fitted horizons j L (j = 1..24, w(0) = 0); beyond 200 ms the 200 ms
 //            weights are scaled by h / 200 ms (still exact at constant velocity).
 //
-// Bounds (tests/primitives/finger_predictor_test.cpp):
+// Bounds (tests/touch_prediction/, docs/latency.md "What the tests hold it to"):
 //   - a still finger (all d_k = 0) is predicted where it is, by every model;
 //   - |fitted offset| <= max(sum|w_free|, sum|w_exact|) * max_k |d_k|: no more than a fixed
 //     multiple of how far the finger moved in the last 100 ms;
 //   - constant acceleration a with velocity v at t_n: error = lambda e_exact + (1 - lambda) e_free,
 //     e = v (-sum w_k k L - h) + a/2 (sum w_k k^2 L^2 - h^2), so |error| <= max(|e_exact|, |e_free|);
-//   - position noise of standard deviation s on every event: the error is a linear combination of
-//     the events' noises whose coefficients sum in absolute value to at most
-//     G = |1 - sum w| + sum |w|, so its standard deviation is at most s G.
+//   - position noise of standard deviation s on every event: the error is a linear combination
+//     sum_i c_i n_i of the events' noises, so its standard deviation is s ||c||_2 (at 120 Hz
+//     c = (1 - sum w, w_1..w_12)); noise bounded by s gives at most s ||c||_1;
+//   - every model: |offset| <= (h / 1 ms) x the largest distance from the last position to an
+//     event since 2 ms before the newest event at least 100 ms old (no offset runs away).
 // Silence (the finger stopped: panels send no events while a finger rests) is the caller's
 // horizon rule: predict_finger_at() fades the offset to zero as the time since the last event
 // grows from kSilenceHold_s to kSilenceStop_s.
