@@ -1,7 +1,8 @@
 // `vimg compare` cost (issue 20: 20 images with the default exploration in <= 5 s on the project's
 // machine): the whole comparison of 20 images of the bundled matching sets (60 x 110 mm, a 58 s
 // exploration each), on both cores and on one, and its parts: one image's render under the
-// exploration, the analysis of one signal, and the ST-SIM and similarity matrices of 20 signals.
+// exploration, the analysis of one signal (ST-SIM's and the discrimination model's), the ST-SIM
+// matrix and the cue matrix of 20 signals.
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -9,7 +10,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "primitives/perception/perceptual_similarity.hpp"
+#include "primitives/perception/discrimination_cues.hpp"
+#include "primitives/perception/stsim.hpp"
 #include "storage/image_io.hpp"
 #include "study/compare.hpp"
 #include "study/compare_render.hpp"
@@ -79,18 +81,29 @@ std::vector<double> rendered(const char* name) {
 void BM_AnalyseOneSignal(benchmark::State& state) {
   const std::vector<double> signal = rendered("set_b1_house_and_tree.vimg");
   for (auto _ : state) {
-    const PerceptualFeatures f = analyse(signal);
-    benchmark::DoNotOptimize(f.stsim.blocks);
+    const StSimFeatures st = analyse_stsim(signal);
+    const DiscriminationFeatures d = analyse_discrimination(signal);
+    benchmark::DoNotOptimize(st.blocks);
+    benchmark::DoNotOptimize(d.level_db);
   }
 }
 BENCHMARK(BM_AnalyseOneSignal)->Unit(benchmark::kMillisecond);
 
-const std::vector<PerceptualFeatures>& twenty_features() {
-  static const std::vector<PerceptualFeatures> features = [] {
+struct TwentySignals {
+  std::vector<StSimFeatures> stsim;
+  std::vector<DiscriminationFeatures> discrimination;
+};
+
+const TwentySignals& twenty_features() {
+  static const TwentySignals features = [] {
     const char* names[] = {"set_a1_one_object.vimg", "set_a2_two_objects.vimg", "set_a3_three_objects.vimg",
                            "set_a4_four_objects.vimg", "set_b1_house_and_tree.vimg"};
-    std::vector<PerceptualFeatures> out;
-    for (int i = 0; i < 20; ++i) out.push_back(analyse(rendered(names[i % 5])));
+    TwentySignals out;
+    for (int i = 0; i < 20; ++i) {
+      const std::vector<double> signal = rendered(names[i % 5]);
+      out.stsim.push_back(analyse_stsim(signal));
+      out.discrimination.push_back(analyse_discrimination(signal));
+    }
     return out;
   }();
   return features;
@@ -98,15 +111,15 @@ const std::vector<PerceptualFeatures>& twenty_features() {
 
 void BM_StsimMatrix20(benchmark::State& state) {
   const auto& f = twenty_features();
-  for (auto _ : state) benchmark::DoNotOptimize(stsim_matrix(f).data());
+  for (auto _ : state) benchmark::DoNotOptimize(stsim_matrix(f.stsim).data());
 }
 BENCHMARK(BM_StsimMatrix20)->Unit(benchmark::kMillisecond);
 
-void BM_SimilarityMatrix20(benchmark::State& state) {
+void BM_CueMatrix20(benchmark::State& state) {
   const auto& f = twenty_features();
-  for (auto _ : state) benchmark::DoNotOptimize(similarity_matrix(f).data());
+  for (auto _ : state) benchmark::DoNotOptimize(cue_matrix(f.discrimination).data());
 }
-BENCHMARK(BM_SimilarityMatrix20)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CueMatrix20)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

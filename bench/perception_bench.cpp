@@ -1,6 +1,6 @@
 // What `vimg compare` costs in the perceptual model (docs/perception.md): 20 rendered signals of
-// 20 s at 8 kHz, each analysed once, then ST-SIM both ways and the perceptual similarity for every
-// pair, and the predicted confusion.
+// 20 s at 8 kHz, each analysed once (ST-SIM's features and the discrimination model's), then ST-SIM
+// both ways and the cue distances for every pair, and the predicted confusion.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -8,8 +8,9 @@
 #include <numbers>
 #include <vector>
 
-#include "primitives/perception/perceptual_similarity.hpp"
+#include "primitives/perception/discrimination_choice.hpp"
 #include "primitives/perception/predicted_confusion.hpp"
+#include "primitives/perception/stsim.hpp"
 
 namespace vimg {
 namespace {
@@ -46,13 +47,21 @@ const std::vector<std::vector<double>>& signals() {
   return s;
 }
 
-std::vector<PerceptualFeatures> analyse_all() {
-  std::vector<PerceptualFeatures> features;
-  for (const auto& s : signals()) features.push_back(analyse(s));
-  return features;
+struct Features {
+  std::vector<StSimFeatures> stsim;
+  std::vector<DiscriminationFeatures> discrimination;
+};
+
+Features analyse_all() {
+  Features f;
+  for (const auto& s : signals()) {
+    f.stsim.push_back(analyse_stsim(s));
+    f.discrimination.push_back(analyse_discrimination(s));
+  }
+  return f;
 }
 
-// analyse() of 20 signals of 20 s.
+// Both analyses of 20 signals of 20 s.
 void BM_AnalyseTwentySignals(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(analyse_all());
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kSignals));
@@ -62,24 +71,24 @@ BENCHMARK(BM_AnalyseTwentySignals)->Unit(benchmark::kMillisecond);
 // stsim[i][j] for all 380 ordered pairs.
 void BM_StSimMatrixTwentySignals(benchmark::State& state) {
   const auto features = analyse_all();
-  for (auto _ : state) benchmark::DoNotOptimize(stsim_matrix(features));
+  for (auto _ : state) benchmark::DoNotOptimize(stsim_matrix(features.stsim));
 }
 BENCHMARK(BM_StSimMatrixTwentySignals)->Unit(benchmark::kMillisecond);
 
-// perceptual_similarity for all 190 pairs (ST-SIM both ways over the felt blocks).
-void BM_SimilarityMatrixTwentySignals(benchmark::State& state) {
+// cue_distances for all 190 pairs.
+void BM_CueMatrixTwentySignals(benchmark::State& state) {
   const auto features = analyse_all();
-  for (auto _ : state) benchmark::DoNotOptimize(similarity_matrix(features));
+  for (auto _ : state) benchmark::DoNotOptimize(cue_matrix(features.discrimination));
 }
-BENCHMARK(BM_SimilarityMatrixTwentySignals)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CueMatrixTwentySignals)->Unit(benchmark::kMillisecond);
 
 // Everything `vimg compare` asks of the model after rendering: analyse, both matrices, confusion.
 void BM_CompareTwentySignals(benchmark::State& state) {
   for (auto _ : state) {
     const auto features = analyse_all();
-    benchmark::DoNotOptimize(stsim_matrix(features));
-    const auto similarity = similarity_matrix(features);
-    benchmark::DoNotOptimize(likely_confused_pairs(predicted_confusion(similarity)));
+    benchmark::DoNotOptimize(stsim_matrix(features.stsim));
+    const PerceptionMatrix p = discrimination_confusion(cue_matrix(features.discrimination));
+    benchmark::DoNotOptimize(likely_confused_pairs(p));
   }
 }
 BENCHMARK(BM_CompareTwentySignals)->Unit(benchmark::kMillisecond);

@@ -155,8 +155,11 @@ void CompareWindow::draw_matrix(const study::CompareResult& r) {
       ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, shade(p));
       ImGui::Text("%.2f", p);
       if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("%s presented, %s chosen: p = %.3f\nsimilarity %.3f, ST-SIM %.3f", r.inputs[i].label.c_str(),
-                          r.inputs[j].label.c_str(), p, r.similarity[i][j], r.stsim[i][j]);
+        const CueDistances& d = r.cues[i][j];
+        static_assert(kCueCount == 3, "the tooltip names every cue");
+        ImGui::SetTooltip("%s presented, %s chosen: p = %.3f\n%.1f JNDs apart (%s %.1f, %s %.1f, %s %.1f), ST-SIM %.3f",
+                          r.inputs[i].label.c_str(), r.inputs[j].label.c_str(), p, r.distance_jnd[i][j],
+                          cue_name(0).data(), d[0], cue_name(1).data(), d[1], cue_name(2).data(), d[2], r.stsim[i][j]);
       }
     }
   }

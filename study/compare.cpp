@@ -76,23 +76,6 @@ void fail(CompareResult& r, std::string message) {
   r.diagnostics.push_back({Diagnostic::Severity::error, "vimg compare", 0, std::move(message)});
 }
 
-// The similarity of every pair, and the ST-SIM of each direction as it enters it (bounded to [0, 1],
-// over the blocks either signal makes felt), from one perceptual_similarity per pair.
-void fill_similarity(const std::vector<PerceptualFeatures>& features, const SimilarityConstants& constants, CompareResult& r) {
-  const std::size_t n = features.size();
-  const auto bounded = [](double v) { return std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 1.0); };
-  r.similarity.assign(n, std::vector<double>(n, 1.0));
-  r.stsim.assign(n, std::vector<double>(n, 1.0));
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const PerceptualSimilarity s = perceptual_similarity(features[i], features[j], constants);
-      r.similarity[i][j] = r.similarity[j][i] = s.value;
-      r.stsim[i][j] = bounded(s.stsim_ab);
-      r.stsim[j][i] = bounded(s.stsim_ba);
-    }
-  }
-}
-
 }  // namespace
 
 CompareInputKind compare_input_kind(const std::filesystem::path& path) {
@@ -112,8 +95,8 @@ CompareResult run_compare(const CompareRequest& request) {
   CompareResult r;
   r.actuator = request.actuator;
   r.calibration = request.calibration;
-  r.similarity_constants = request.similarity;
   r.choice = request.choice;
+  r.discrimination = request.discrimination;
   const std::size_t n = request.inputs.size();
   if (n < 2) {
     fail(r, "give at least 2 inputs to compare");
@@ -163,7 +146,8 @@ CompareResult run_compare(const CompareRequest& request) {
   }
 
   // Render (images) and analyse (all) on every thread; a render stops at should_stop().
-  std::vector<PerceptualFeatures> features(n);
+  std::vector<StSimFeatures> stsim_features(n);
+  r.features.resize(n);
   std::atomic<bool> stopped{false};
   std::mutex progress_mutex;
   std::size_t analysed = 0;
@@ -181,7 +165,8 @@ CompareResult run_compare(const CompareRequest& request) {
     r.inputs[i].duration_s = static_cast<double>(samples.size()) / kCompareRateHz;
     const std::vector<double> wide(samples.begin(), samples.end());
     samples = {};
-    features[i] = analyse(wide, request.calibration);
+    stsim_features[i] = analyse_stsim(wide);
+    r.features[i] = analyse_discrimination(wide, request.calibration);
     if (request.progress) {
       const std::lock_guard<std::mutex> lock(progress_mutex);
       request.progress(++analysed, n);
@@ -192,9 +177,13 @@ CompareResult run_compare(const CompareRequest& request) {
     return r;
   }
 
-  r.stsim_plain = stsim_matrix(features);
-  fill_similarity(features, request.similarity, r);
-  r.predicted_confusion = predicted_confusion(r.similarity, request.choice);
+  r.stsim = stsim_matrix(stsim_features);
+  r.cues = cue_matrix(r.features);
+  r.distance_jnd.assign(n, std::vector<double>(n, 0.0));
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) r.distance_jnd[i][j] = combined_distance_jnd(r.cues[i][j], request.discrimination);
+  }
+  r.predicted_confusion = discrimination_confusion(r.cues, request.discrimination);
   r.likely_confused = likely_confused_pairs(r.predicted_confusion, request.choice);
   for (const ConfusedPair& pair : r.likely_confused)
     r.warnings.push_back(confusion_warning(r.inputs[pair.a].label, r.inputs[pair.b].label, pair.p));

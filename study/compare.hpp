@@ -3,10 +3,11 @@
 // compare"): will people tell these images apart? Every image is rendered under the same gestures
 // (the standard exploration of study/exploration.hpp for the images' canvas, or the gestures given)
 // through the actuator's model (compare_render.hpp); a rendered signal (WAV or render CSV,
-// compare_signal.hpp) is taken as it is. Then the perceptual model of primitives/perception
-// (docs/perception.md): ST-SIM of every ordered pair, the symmetric perceptual similarity (ST-SIM
-// with the sensation level above the detection threshold), the Shepard-Luce predicted confusion,
-// and the pairs likely confused.
+// compare_signal.hpp) is taken as it is. Then the discrimination model of primitives/perception
+// (docs/perception.md): every input's cues (level, pitch, envelope), their distances in JNDs for
+// every pair, the predicted confusion of the choice rule, and the pairs likely confused; beside it,
+// ST-SIM of every ordered pair as the reference implementation computes it (reported, not used for
+// the confusion).
 //
 // Threads: run_compare() renders and analyses the images on `threads` threads at once
 // (storage/parallel_tasks.hpp) and blocks until all is done; it may run on any thread that is not a
@@ -19,9 +20,11 @@
 
 #include "primitives/gesture.hpp"
 #include "primitives/actuator/response_params.hpp"
-#include "primitives/perception/perceptual_similarity.hpp"
+#include "primitives/perception/discrimination_choice.hpp"
+#include "primitives/perception/discrimination_cues.hpp"
 #include "primitives/perception/predicted_confusion.hpp"
 #include "primitives/perception/sensation_level.hpp"
+#include "primitives/perception/stsim.hpp"
 #include "storage/diagnostic.hpp"
 #include "study/exploration.hpp"
 
@@ -45,8 +48,9 @@ struct CompareRequest {
   std::vector<CompareGesture> gestures;  // empty: the standard exploration of the images' canvas
   ExplorationSpec exploration;
   LevelCalibration calibration;
-  SimilarityConstants similarity;
-  ChoiceModel choice;
+  // The discrimination model's free constants (docs/perception.md): the confusion comes from them.
+  DiscriminationConstants discrimination;
+  ChoiceModel choice;                    // likely_confused_p: the warning's threshold
   int threads = 0;                       // <= 0: one per core
   bool (*should_stop)() = nullptr;       // asked between render blocks (SIGINT); null: never
   // Called once per input when its signal is analysed (`analysed` of `total`), from the worker
@@ -70,17 +74,17 @@ struct CompareResult {
   std::vector<std::string> gesture_files;                   // when gestures were given
   CompareActuator actuator;
   LevelCalibration calibration;
-  SimilarityConstants similarity_constants;
   ChoiceModel choice;
-  // stsim[i][j]: ST-SIM of input i against reference j as the similarity takes it (docs/perception.md,
-  // "Perceptual similarity"): over the blocks where either is felt, bounded to [0, 1]; 1 is the same
-  // waveform, 0 nothing in common. The structure S of the pair is min(stsim[i][j], stsim[j][i]).
+  DiscriminationConstants discrimination;            // as requested
+  // stsim[i][j]: ST-SIM of input i against reference j over their common length, exactly as the
+  // reference implementation (vibromaf) computes it (stsim_matrix): a codec-distortion metric,
+  // reported beside the prediction, not part of it. Unbounded (against a reference that is only a
+  // decayed ring it runs to 1e4 and more); NaN: no value.
   PerceptionMatrix stsim;
-  // The plain metric over the whole common length (stsim_matrix), unbounded: against a reference
-  // that is only a decayed ring where the other is felt it runs to 1e4 .. 1e6. NaN: no value.
-  PerceptionMatrix stsim_plain;
-  PerceptionMatrix similarity;           // symmetric perceptual similarity
-  PerceptionMatrix predicted_confusion;  // rows presented, columns chosen, each row sums to 1
+  std::vector<DiscriminationFeatures> features;      // of every input, in order
+  CueMatrix cues;                                    // cue_matrix(features): [presented][chosen], JNDs
+  PerceptionMatrix distance_jnd;                     // combined_distance_jnd of cues under discrimination
+  PerceptionMatrix predicted_confusion;  // discrimination_confusion: rows presented, columns chosen, each sums to 1
   std::vector<ConfusedPair> likely_confused;
   std::vector<std::string> warnings;     // "A.vimg ~ B.vimg: likely confused (p = 0.50)", one per pair
   std::vector<Diagnostic> diagnostics;   // of the inputs (warnings, or errors: then nothing else is set)

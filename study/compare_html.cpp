@@ -47,16 +47,38 @@ HeatMap heat_map(const CompareResult& r, const PerceptionMatrix& m, std::string 
   return map;
 }
 
+std::string distance_table(const CompareResult& r) {
+  std::string cues;
+  for (std::size_t c = 0; c < kCueCount; ++c) cues += (c ? ", " : "") + std::string(cue_name(c));
+  std::string s =
+      "<p class=\"note\">How far apart each pair is, in just-noticeable differences (1 JND: told apart in 75 % of "
+      "two-alternative trials): the combined distance, then per cue (" + xml_text(cues) + ").</p>\n";
+  s += "<table>\n<tr><th class=\"name\">JNDs</th>";
+  for (const CompareInput& in : r.inputs) s += "<th>" + xml_text(in.label) + "</th>";
+  s += "</tr>\n";
+  for (std::size_t i = 0; i < r.inputs.size(); ++i) {
+    s += "<tr><th class=\"name\">" + xml_text(r.inputs[i].label) + "</th>";
+    for (std::size_t j = 0; j < r.inputs.size(); ++j) {
+      std::string per_cue;
+      for (std::size_t c = 0; c < kCueCount; ++c) per_cue += (c ? ", " : "") + number_text(r.cues[i][j][c], 1);
+      s += "<td>" + number_text(r.distance_jnd[i][j], 1) + " <span class=\"note\">(" + per_cue + ")</span></td>";
+    }
+    s += "</tr>\n";
+  }
+  return s + "</table>\n";
+}
+
 std::string stsim_table(const CompareResult& r) {
   std::string s =
-      "<p class=\"note\">How alike the waveforms are, block by block: 1 the same waveform, 0 nothing in common. "
-      "ST-SIM of the image \u2193 against the reference \u2192 over the stretches where either is felt, bounded to "
-      "[0, 1] as the similarity takes it: the pair's structure is the smaller of its two directions.</p>\n";
+      "<p class=\"note\">ST-SIM, the codec-distortion metric (vibromaf's values): how alike the waveforms are, block "
+      "by block, phase included; 1 the same waveform. Of the image \u2193 against the reference \u2192 over their common "
+      "length; \u2013 where it has no value. It does not decide the prediction: two vibrations felt alike may have "
+      "unrelated waveforms.</p>\n";
   s += "<table>\n<tr><th class=\"name\">ST-SIM of \u2193 against reference \u2192</th>";
   for (const CompareInput& in : r.inputs) s += "<th>" + xml_text(in.label) + "</th>";
   s += "</tr>\n";
   for (std::size_t i = 0; i < r.inputs.size(); ++i) {
-    s += "<tr><td class=\"name\">" + xml_text(r.inputs[i].label) + "</td>";
+    s += "<tr><th class=\"name\">" + xml_text(r.inputs[i].label) + "</th>";
     for (std::size_t j = 0; j < r.inputs.size(); ++j) s += "<td>" + number_text(r.stsim[i][j], 3) + "</td>";
     s += "</tr>\n";
   }
@@ -83,11 +105,15 @@ std::string setup_html(const CompareResult& r) {
       s += "<li>" + xml_text(in.label) + " is a rendered signal, compared as it is (" + number_text(in.duration_s, 1) + " s).</li>\n";
     }
   }
-  s += "<li>Model: ST-SIM with the sensation level above the detection threshold (full scale " +
-       number_text(r.calibration.full_scale_peak_acceleration_mps2, 2) + " m/s\u00b2 peak, structure fully counted from " +
-       number_text(r.similarity_constants.full_structure_db, 1) + " dB, " +
-       number_text(r.similarity_constants.level_halving_db, 1) +
-       " dB of level difference halves the similarity); Shepard\u2013Luce choice with \u03c4 = " + number_text(r.choice.tau, 3) +
+  std::string weights;
+  for (std::size_t c = 0; c < kCueCount; ++c) {
+    weights += (c ? ", " : "") + std::string(cue_name(c)) + " " + number_text(r.discrimination.cue_weight[c], 2);
+  }
+  s += "<li>Model: the discrimination model of docs/perception.md (full scale " +
+       number_text(r.calibration.full_scale_peak_acceleration_mps2, 2) + " m/s\u00b2 peak; JNDs " +
+       number_text(kLevelJndDb, 1) + " dB of level, " + number_text(100.0 * kFrequencyWeberFraction, 0) +
+       " % of frequency); choice with temperature " + number_text(r.discrimination.temperature_jnd, 3) +
+       " JND, lapse rate " + number_text(r.discrimination.lapse_rate, 3) + ", cue weights " + xml_text(weights) +
        "; a pair is likely confused from p = " + number_text(r.choice.likely_confused_p, 2) + ".</li>\n</ul>\n";
   return s;
 }
@@ -109,7 +135,7 @@ std::string compare_html(const CompareResult& r) {
     s += "</ul>\n";
   }
   s += "<figure>\n" + heat_map_svg(heat_map(r, r.predicted_confusion, "Predicted confusion")) + "</figure>\n";
-  s += "<figure>\n" + heat_map_svg(heat_map(r, r.similarity, "Perceptual similarity (symmetric)")) + "</figure>\n";
+  s += "<h2>Distances</h2>\n" + distance_table(r);
   s += "<h2>ST-SIM</h2>\n" + stsim_table(r);
   s += setup_html(r);
   s += "<p class=\"note\">Written by vimg compare; the model is described in docs/perception.md and docs/studies.md.</p>\n";

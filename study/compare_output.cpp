@@ -113,6 +113,15 @@ void describe_exploration(JsonWriter& w, const CompareResult& r) {
   w.end_object();
 }
 
+// One cue's distances of every ordered pair, JNDs.
+PerceptionMatrix cue_of(const CueMatrix& cues, std::size_t cue) {
+  PerceptionMatrix m(cues.size());
+  for (std::size_t i = 0; i < cues.size(); ++i) {
+    for (const CueDistances& d : cues[i]) m[i].push_back(d[cue]);
+  }
+  return m;
+}
+
 void describe_model(JsonWriter& w, const CompareResult& r) {
   w.begin_object();
   w.key("documentation");
@@ -121,14 +130,23 @@ void describe_model(JsonWriter& w, const CompareResult& r) {
   w.number(r.calibration.full_scale_peak_acceleration_mps2);
   w.key("threshold_at_250hz_peak_displacement_m");
   w.number(r.calibration.threshold_at_250hz_peak_displacement_m);
-  w.key("full_structure_db");
-  w.number(r.similarity_constants.full_structure_db);
-  w.key("level_halving_db");
-  w.number(r.similarity_constants.level_halving_db);
+  w.key("level_jnd_db");
+  w.number(kLevelJndDb);
+  w.key("frequency_weber_fraction");
+  w.number(kFrequencyWeberFraction);
   w.key("choice_model");
-  w.string("Shepard-Luce: p(j|i) proportional to exp(-(1 - similarity[i][j]) / tau)");
-  w.key("tau");
-  w.number(r.choice.tau);
+  w.string("p(j|i) = (1 - lapse) exp(-D_ij / T) / sum_k exp(-D_ik / T) + lapse / n, D = sqrt(sum_c (w_c d_c)^2)");
+  w.key("temperature_jnd");
+  w.number(r.discrimination.temperature_jnd);
+  w.key("lapse_rate");
+  w.number(r.discrimination.lapse_rate);
+  w.key("cue_weight");
+  w.begin_object();
+  for (std::size_t c = 0; c < kCueCount; ++c) {
+    w.key(std::string(cue_name(c)));
+    w.number(r.discrimination.cue_weight[c]);
+  }
+  w.end_object();
   w.key("likely_confused_p");
   w.number(r.choice.likely_confused_p);
   w.end_object();
@@ -164,10 +182,15 @@ std::string compare_json(const CompareResult& r) {
   w.end_array();
   w.key("stsim");
   matrix(w, r.stsim);
-  w.key("stsim_plain");
-  matrix(w, r.stsim_plain);
-  w.key("similarity");
-  matrix(w, r.similarity);
+  w.key("cue_distances_jnd");
+  w.begin_object();
+  for (std::size_t c = 0; c < kCueCount; ++c) {
+    w.key(std::string(cue_name(c)));
+    matrix(w, cue_of(r.cues, c));
+  }
+  w.end_object();
+  w.key("distance_jnd");
+  matrix(w, r.distance_jnd);
   w.key("predicted_confusion");
   matrix(w, r.predicted_confusion);
   w.key("likely_confused");
@@ -217,14 +240,20 @@ std::string compare_json(const CompareResult& r) {
 }
 
 std::string compare_csv(const CompareResult& r) {
-  std::string out = "image_i,image_j,stsim,similarity,predicted_p\n";
+  std::string out = "image_i,image_j,stsim";
+  for (std::size_t c = 0; c < kCueCount; ++c) out += "," + std::string(cue_name(c)) + "_jnd";
+  out += ",distance_jnd,predicted_p\n";
   const std::size_t n = r.inputs.size();
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) {
       out += csv_field(r.inputs[i].path) + ',' + csv_field(r.inputs[j].path) + ',';
-      append_decimal(out, r.stsim[i][j]);
+      if (std::isfinite(r.stsim[i][j])) append_decimal(out, r.stsim[i][j]);
+      for (std::size_t c = 0; c < kCueCount; ++c) {
+        out += ',';
+        append_decimal(out, r.cues[i][j][c]);
+      }
       out += ',';
-      append_decimal(out, r.similarity[i][j]);
+      append_decimal(out, r.distance_jnd[i][j]);
       out += ',';
       append_decimal(out, r.predicted_confusion[i][j]);
       out += '\n';

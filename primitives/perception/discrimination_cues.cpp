@@ -42,17 +42,37 @@ ChannelGains channel_gains(const LevelCalibration& calibration) {
   return g;
 }
 
-// Hann window of kEnvelopeWindowMs, weights summing to 1.
-std::vector<double> envelope_window() {
-  const auto length = static_cast<std::size_t>(kEnvelopeWindowMs * kStSimSampleRateHz / 1000.0);
-  std::vector<double> w(length);
+// A Hann window of `length` points (rounded), weights summing to 1.
+std::vector<double> hann_window(double length) {
+  const auto n = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(length)));
+  std::vector<double> w(n);
   double total = 0.0;
-  for (std::size_t i = 0; i < length; ++i) {
-    w[i] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(length));
+  for (std::size_t i = 0; i < n; ++i) {
+    w[i] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(n));
     total += w[i];
   }
   for (double& v : w) v /= total;
   return w;
+}
+
+// A track with the range of its values within +-kTimingToleranceMs of each step.
+EnvelopeTrack envelope_track(std::vector<float> db, float silent_db) {
+  EnvelopeTrack t;
+  const std::size_t steps = db.size();
+  const auto tolerance = static_cast<std::size_t>(kTimingToleranceMs / kEnvelopeStepMs);
+  t.low_db.resize(steps);
+  t.high_db.resize(steps);
+  for (std::size_t s = 0; s < steps; ++s) {
+    const std::size_t first = s > tolerance ? s - tolerance : 0;
+    const std::size_t last = std::min(steps - 1, s + tolerance);
+    const auto [low, high] = std::minmax_element(db.begin() + static_cast<std::ptrdiff_t>(first),
+                                                 db.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    t.low_db[s] = *low;
+    t.high_db[s] = *high;
+  }
+  t.db = std::move(db);
+  t.silent_db = silent_db;
+  return t;
 }
 
 // The distance of x from the interval [low, high].
@@ -105,13 +125,13 @@ DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8kh
 
   f.level_db = std::max(0.0, to_db(best));
 
-  // Envelope: the Hann-weighted mean of x^2 around each step relative to its largest value, dB,
-  // floored where it falls below the threshold (level_db below the strongest moment).
-  const std::vector<double> window = envelope_window();
+  // Envelopes: the Hann-weighted mean of x^2 around each step (fast), and that smoothed again over
+  // kSlowEnvelopeWindowMs (slow), in dB relative to the slow one's largest value, floored where
+  // they fall below the threshold (level_db below the strongest moment).
+  const std::vector<double> window = hann_window(kEnvelopeWindowMs * kStSimSampleRateHz / 1000.0);
   const std::size_t half = window.size() / 2;
   const std::size_t steps = (size + kEnvelopeStepSamples - 1) / kEnvelopeStepSamples;
-  std::vector<double> level(steps, 0.0);
-  double peak = kSilentLevelDb;
+  std::vector<double> fast(steps, 0.0);
   for (std::size_t s = 0; s < steps; ++s) {
     const std::size_t centre = s * kEnvelopeStepSamples;
     double mean_square = 0.0;
@@ -121,23 +141,36 @@ DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8kh
       const double x = signal_8khz[static_cast<std::size_t>(n)];
       mean_square += window[i] * x * x;
     }
-    level[s] = to_db(mean_square);
-    peak = std::max(peak, level[s]);
+    fast[s] = mean_square;
   }
-  f.envelope_db.resize(steps);
-  for (std::size_t s = 0; s < steps; ++s) f.envelope_db[s] = static_cast<float>(std::max(level[s] - peak, -f.level_db));
-  // The range of the envelope within +-kTimingToleranceMs of each step (inside the signal).
-  const auto tolerance = static_cast<std::size_t>(kTimingToleranceMs / kEnvelopeStepMs);
-  f.envelope_low_db.resize(steps);
-  f.envelope_high_db.resize(steps);
+  const std::vector<double> slow_window = hann_window(kSlowEnvelopeWindowMs / kEnvelopeStepMs);
+  const std::size_t slow_half = slow_window.size() / 2;
+  std::vector<double> slow(steps, 0.0);
+  double peak = 0.0;
   for (std::size_t s = 0; s < steps; ++s) {
-    const std::size_t first = s > tolerance ? s - tolerance : 0;
-    const std::size_t last = std::min(steps - 1, s + tolerance);
-    const auto [low, high] = std::minmax_element(f.envelope_db.begin() + static_cast<std::ptrdiff_t>(first),
-                                                 f.envelope_db.begin() + static_cast<std::ptrdiff_t>(last) + 1);
-    f.envelope_low_db[s] = *low;
-    f.envelope_high_db[s] = *high;
+    double mean = 0.0;
+    for (std::size_t i = 0; i < slow_window.size(); ++i) {
+      const std::ptrdiff_t k = static_cast<std::ptrdiff_t>(s + i) - static_cast<std::ptrdiff_t>(slow_half);
+      if (k >= 0 && static_cast<std::size_t>(k) < steps) mean += slow_window[i] * fast[static_cast<std::size_t>(k)];
+    }
+    slow[s] = mean;
+    peak = std::max(peak, mean);
   }
+  const double peak_db = to_db(peak);
+  const auto relative = [&](double mean_square) { return std::max(to_db(mean_square) - peak_db, -f.level_db); };
+  // A dip: how far the fast envelope falls below the smaller of its largest values in the
+  // kDipContextMs before and after (signal on both sides: a gap, not an onset or an end).
+  const auto context = static_cast<std::size_t>(kDipContextMs / kEnvelopeStepMs);
+  std::vector<float> slow_db(steps), dips_db(steps);
+  for (std::size_t s = 0; s < steps; ++s) {
+    double before = 0.0, after = 0.0;
+    for (std::size_t k = s > context ? s - context : 0; k <= s; ++k) before = std::max(before, fast[k]);
+    for (std::size_t k = s; k < steps && k <= s + context; ++k) after = std::max(after, fast[k]);
+    slow_db[s] = static_cast<float>(relative(slow[s]));
+    dips_db[s] = static_cast<float>(std::min(0.0, relative(fast[s]) - relative(std::min(before, after))));
+  }
+  f.slow_envelope = envelope_track(std::move(slow_db), static_cast<float>(-f.level_db));
+  f.dips = envelope_track(std::move(dips_db), 0.0f);
 
   // Pitch: the excitation-weighted mean of log2 f over the frame-averaged spectrum.
   if (f.level_db > 0.0) {
@@ -158,29 +191,35 @@ std::string_view cue_name(std::size_t cue) {
 
 namespace {
 
-// The largest amount by which a moment of one relative envelope lies outside the other's range
-// within +-kTimingToleranceMs; beyond a signal's end its envelope is silence (-level_db).
-double envelope_distance_db(const DiscriminationFeatures& a, const DiscriminationFeatures& b) {
-  const auto one_way = [](const DiscriminationFeatures& x, const DiscriminationFeatures& y) {
-    const std::size_t steps = std::max(x.envelope_db.size(), y.envelope_db.size());
-    const double x_silent = -x.level_db;
-    const double y_silent = -y.level_db;
-    const std::size_t y_size = y.envelope_db.size();
+// The largest amount by which a moment of one track lies outside the other's range within
+// +-kTimingToleranceMs (beyond a signal's ends its track is silence), weighted by how strongly that
+// moment is felt: min(1, level / kFullSalienceLevelDb), the felt level of the stronger of the two
+// slow envelopes there (near threshold a difference counts less; where neither is felt, not at all).
+double track_distance_db(const DiscriminationFeatures& a, const DiscriminationFeatures& b, EnvelopeTrack DiscriminationFeatures::*track) {
+  const auto one_way = [track](const DiscriminationFeatures& x, const DiscriminationFeatures& y) {
+    const EnvelopeTrack& tx = x.*track;
+    const EnvelopeTrack& ty = y.*track;
+    const std::size_t steps = std::max(tx.db.size(), ty.db.size());
+    const std::size_t y_size = ty.db.size();
     const auto tolerance = static_cast<std::size_t>(kTimingToleranceMs / kEnvelopeStepMs);
+    const auto felt = [](const DiscriminationFeatures& z, std::size_t s) {
+      return z.level_db + (s < z.slow_envelope.db.size() ? static_cast<double>(z.slow_envelope.high_db[s]) : -z.level_db);
+    };
     double worst = 0.0;
     for (std::size_t s = 0; s < steps; ++s) {
-      const double v = s < x.envelope_db.size() ? static_cast<double>(x.envelope_db[s]) : x_silent;
-      double low = y_silent, high = y_silent;
+      const double v = s < tx.db.size() ? static_cast<double>(tx.db[s]) : tx.silent_db;
+      double low = ty.silent_db, high = ty.silent_db;
       if (s < y_size) {
-        low = y.envelope_low_db[s];
-        high = y.envelope_high_db[s];
+        low = ty.low_db[s];
+        high = ty.high_db[s];
       }
       // Near y's start and end its range takes in the silence before and after it.
       if (s < tolerance || s + tolerance >= y_size) {
-        low = std::min(low, y_silent);
-        high = std::max(high, y_silent);
+        low = std::min(low, static_cast<double>(ty.silent_db));
+        high = std::max(high, static_cast<double>(ty.silent_db));
       }
-      worst = std::max(worst, outside(v, low, high));
+      const double salience = std::clamp(std::max(felt(x, s), felt(y, s)) / kFullSalienceLevelDb, 0.0, 1.0);
+      worst = std::max(worst, outside(v, low, high) * salience);
     }
     return worst;
   };
@@ -196,9 +235,11 @@ CueDistances cue_distances(const DiscriminationFeatures& a, const Discrimination
   if (felt > 0.0) {
     const double pitch_jnd_octaves = std::log2(1.0 + kFrequencyWeberFraction);
     d[static_cast<std::size_t>(Cue::pitch)] =
-        std::abs(a.pitch_octaves - b.pitch_octaves) / pitch_jnd_octaves * std::min(1.0, felt / kPitchFullLevelDb);
+        std::abs(a.pitch_octaves - b.pitch_octaves) / pitch_jnd_octaves * std::min(1.0, felt / kFullSalienceLevelDb);
   }
-  d[static_cast<std::size_t>(Cue::envelope)] = envelope_distance_db(a, b) / kLevelJndDb;
+  d[static_cast<std::size_t>(Cue::envelope)] =
+      std::max(track_distance_db(a, b, &DiscriminationFeatures::slow_envelope), track_distance_db(a, b, &DiscriminationFeatures::dips)) /
+      kLevelJndDb;
   return d;
 }
 

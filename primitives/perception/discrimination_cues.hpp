@@ -23,18 +23,24 @@
 //              Pacinian channel (Verrillo 1965: about 3 dB per doubling of duration);
 //   pitch:     log2 of the excitation-weighted mean log-frequency (the centroid, in octaves, of the
 //              frame-averaged excitation): a sine's own frequency; a texture's dominant one;
-//   envelope:  every kEnvelopeStepSamples (1 ms) the power of the signal around it (a Hann-shaped
-//              window kEnvelopeWindowMs wide: the skin's temporal resolution) in dB relative to its
-//              largest value, floored at -level_db (below threshold nothing is felt, so a gap in a
-//              faint vibration is shallower than in a strong one);
+//   envelope:  every kEnvelopeStepSamples (1 ms) the power of the signal around it under a Hann
+//              window kEnvelopeWindowMs wide (fast: the skin's temporal resolution, which sets gap
+//              detection) and that power smoothed again over kSlowEnvelopeWindowMs (slow: brief
+//              increments sum over time, as the Pacinian channel's threshold does), in dB relative
+//              to the slow envelope's largest value, floored at -level_db (below threshold nothing is
+//              felt, so a gap in a faint vibration is shallower than in a strong one). Kept: the slow
+//              envelope (rhythm, level over time) and the dips: how far the fast
+//              envelope falls below the smaller of its largest values within kDipContextMs before
+//              and after (a gap has signal on both sides; an onset or an end does not);
 //
 // Cue distances between two signals a and b, each >= 0, in JNDs, symmetric, 0 for identical:
 //   level:    |level_a - level_b| / kLevelJndDb;
 //   pitch:    |pitch_a - pitch_b| / log2(1 + kFrequencyWeberFraction), scaled by
-//             min(1, min(level_a, level_b) / kPitchFullLevelDb): pitch needs both to be felt;
-//   envelope: the largest difference of the two relative envelopes in dB, each moment against the
-//             other's range within +-kTimingToleranceMs (free exploration does not repeat its
-//             timing exactly), / kLevelJndDb: a gap, a beat, a rhythm.
+//             min(1, min(level_a, level_b) / kFullSalienceLevelDb): pitch needs both to be felt;
+//   envelope: the largest difference, in dB, of the two slow envelopes or of the two dip tracks,
+//             each moment against the other's range within +-kTimingToleranceMs (free exploration
+//             does not repeat its timing exactly), scaled by min(1, felt level there /
+//             kFullSalienceLevelDb) (the stronger of the two), / kLevelJndDb: a gap, a rhythm.
 //
 // Threads: pure functions over caller-owned data.
 #include <array>
@@ -52,21 +58,32 @@ inline constexpr double kLevelJndDb = 2.0;               // amplitude JND: 1.65-
 inline constexpr double kFrequencyWeberFraction = 0.25;  // 0.13-0.38 (Israr et al. 2006), 0.2-0.35 (Goff 1967)
 inline constexpr double kNonPacinianThresholdPeakDisplacementM = 10e-6;  // NP floor below ~40 Hz
 // Reasoned constants (docs/perception.md says why).
-inline constexpr double kPitchFullLevelDb = 10.0;  // pitch is judged fully from this sensation level
-inline constexpr double kEnvelopeWindowMs = 40.0;  // temporal integration of the envelope (Hann, full width)
+// Differences of pitch and envelope count fully from this sensation level, less below it (in
+// proportion): near threshold a vibration is felt as little more than "something".
+inline constexpr double kFullSalienceLevelDb = 10.0;
+inline constexpr double kEnvelopeWindowMs = 40.0;  // the fast envelope's window (Hann, full width): gaps
+inline constexpr double kSlowEnvelopeWindowMs = 400.0;  // the slow envelope's (Hann): summation of increments
+inline constexpr double kDipContextMs = 50.0;  // a dip is measured against the envelope this far on both sides
 inline constexpr double kTimingToleranceMs = 20.0;  // timing shifts that go unnoticed
 inline constexpr double kLowestFeltHz = 10.0;  // below: drift of the acceleration signal, not counted
 inline constexpr std::size_t kSpectrumFrameSamples = 4096;
 inline constexpr std::size_t kEnvelopeStepSamples = 8;
+
+// A track over time, one value per kEnvelopeStepSamples (1 ms), dB.
+struct EnvelopeTrack {
+  std::vector<float> db;
+  std::vector<float> low_db;   // the least of db within +-kTimingToleranceMs of each step
+  std::vector<float> high_db;  // the largest
+  float silent_db = 0.0f;      // its value in silence (before and after the signal)
+};
 
 struct DiscriminationFeatures {
   double level_db = 0.0;                 // felt sensation level of the strongest moment, >= 0
   double pacinian_level_db = 0.0;        // the same through the P channel alone (may be < 0)
   double non_pacinian_level_db = 0.0;    // through the NP channel alone (may be < 0)
   double pitch_octaves = 0.0;            // log2 of the centroid frequency in Hz (0 when nothing is felt)
-  std::vector<float> envelope_db;        // per 1 ms: dB re the strongest moment, >= -level_db
-  std::vector<float> envelope_low_db;    // per 1 ms: the least of envelope_db within +-kTimingToleranceMs
-  std::vector<float> envelope_high_db;   // the largest
+  EnvelopeTrack slow_envelope;           // dB re its strongest moment, >= -level_db (silence)
+  EnvelopeTrack dips;                    // dB <= 0: how far the fast envelope falls below its surroundings
 };
 
 DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8khz,

@@ -150,4 +150,17 @@ std::optional<StSimScore> stsim_over_blocks(const StSimFeatures& distorted, cons
   return combine(temporal / n, spectral / n, eta);
 }
 
+PerceptionMatrix stsim_matrix(std::span<const StSimFeatures> signals) {
+  const std::size_t n = signals.size();
+  PerceptionMatrix m(n, std::vector<double>(n, 1.0));
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) {
+      if (i == j) continue;
+      const auto score = stsim_common_length(signals[i], signals[j]);
+      m[i][j] = score ? score->value : std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  return m;
+}
+
 }  // namespace vimg

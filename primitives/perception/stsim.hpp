@@ -26,6 +26,8 @@
 #include <span>
 #include <vector>
 
+#include "primitives/perception/perception_matrix.hpp"
+
 namespace vimg {
 
 inline constexpr double kStSimSampleRateHz = 8000.0;
@@ -68,8 +70,12 @@ std::optional<StSimScore> stsim_common_length(const StSimFeatures& distorted, co
 
 // ST-SIM with the mean over a subset of blocks: block k counts when use_block[k] is non-zero (k
 // below the blocks of both and below use_block.size()). No identity test, no cutting. No value when
-// no block counts. perceptual_similarity() uses it to leave out blocks that neither signal makes felt.
+// no block counts.
 std::optional<StSimScore> stsim_over_blocks(const StSimFeatures& distorted, const StSimFeatures& reference,
                                             std::span<const std::uint8_t> use_block, double eta = kStSimEta);
+
+// stsim[i][j] = ST-SIM of signal i against reference j over their common length
+// (stsim_common_length), NaN where it has no value; 1 on the diagonal.
+PerceptionMatrix stsim_matrix(std::span<const StSimFeatures> signals);
 
 }  // namespace vimg

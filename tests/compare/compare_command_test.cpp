@@ -114,11 +114,12 @@ TEST_F(CompareCommand, TheJsonReportHasTheMatricesAndTheWarnings) {
   const auto parsed = parse_json(read_text(dir_ / "r.json"), "r.json");
   ASSERT_TRUE(parsed.value) << (parsed.diagnostics.empty() ? "" : parsed.diagnostics[0].to_string());
   const JsonValue& root = *parsed.value;
-  for (const char* key : {"images", "stsim", "similarity", "predicted_confusion", "warnings", "actuator", "exploration", "model"})
+  for (const char* key : {"images", "stsim", "cue_distances_jnd", "distance_jnd", "predicted_confusion", "warnings", "actuator",
+                          "exploration", "model"})
     EXPECT_NE(root.find(key), nullptr) << key;
   ASSERT_EQ(root.find("images")->items.size(), 3u);
   EXPECT_EQ(root.find("images")->items[0].text, "A.vimg");
-  for (const char* key : {"stsim", "similarity", "predicted_confusion"}) {
+  for (const char* key : {"stsim", "distance_jnd", "predicted_confusion"}) {
     const JsonValue& m = *root.find(key);
     ASSERT_EQ(m.items.size(), 3u) << key;
     for (const auto& row : m.items) ASSERT_EQ(row.items.size(), 3u) << key;
@@ -160,7 +161,7 @@ TEST_F(CompareCommand, TheCsvReportIsOneRowPerOrderedPair) {
   std::istringstream csv(read_text(dir_ / "r.csv"));
   std::string line;
   std::getline(csv, line);
-  EXPECT_EQ(line, "image_i,image_j,stsim,similarity,predicted_p");
+  EXPECT_EQ(line, "image_i,image_j,stsim,level_jnd,pitch_jnd,envelope_jnd,distance_jnd,predicted_p");
   double row_sum[2] = {0, 0};
   int rows = 0;
   while (std::getline(csv, line)) {

@@ -1,10 +1,11 @@
-// What `vimg compare` reports as ST-SIM, against its definition in docs/perception.md ("Perceptual
-// similarity"): stsim[i][j] is ST-SIM of input i against reference j over the blocks where either is
-// felt, bounded to [0, 1], so that a designer reads it on the scale of the similarity beside it, and
-// the similarity is (1 - v (1 - S)) L with S = min(stsim[i][j], stsim[j][i]). The plain metric, which
-// runs far past 1 against a reference that is only a fading ring, is kept as `stsim_plain` in the
-// JSON. The inputs are signals written here, so the expectations are computed from the same samples
-// with the perception model's parts (ST-SIM over chosen blocks, the sensation levels), not from the
+// What `vimg compare` reports as ST-SIM and what decides its prediction (docs/perception.md):
+// stsim[i][j] is ST-SIM of input i against reference j over their common length, the metric as the
+// reference implementation computes it (stsim_common_length, held to vibromaf by
+// tests/perception/stsim_reference_test.cpp), in the JSON, the CSV and the HTML alike; the
+// predicted confusion is the discrimination model's, so a tone and the same tone shifted in phase,
+// whose ST-SIM is far below 1, are predicted confused half the time (phase is not felt), and the
+// confusion is the choice rule over the reported distances. The inputs are signals written here, so
+// the expectations are computed from the same samples with the model's parts, not from the
 // report's code.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -18,7 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "primitives/perception/perceptual_similarity.hpp"
+#include "primitives/perception/discrimination_choice.hpp"
+#include "primitives/perception/stsim.hpp"
 #include "storage/json_reader.hpp"
 #include "tests/cli/run_command.hpp"
 
@@ -60,11 +62,8 @@ std::string read_text(const fs::path& p) {
   return s.str();
 }
 
-double bounded(double v) { return std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 1.0); }
-
-std::vector<std::vector<double>> matrix_of(const JsonValue& root, const char* key) {
+std::vector<std::vector<double>> matrix_of_value(const JsonValue* value, const char* key) {
   std::vector<std::vector<double>> m;
-  const JsonValue* value = root.find(key);
   EXPECT_NE(value, nullptr) << key;
   if (!value) return m;
   for (const auto& row : value->items) {
@@ -72,6 +71,10 @@ std::vector<std::vector<double>> matrix_of(const JsonValue& root, const char* ke
     for (const auto& cell : row.items) m.back().push_back(cell.number);
   }
   return m;
+}
+
+std::vector<std::vector<double>> matrix_of(const JsonValue& root, const char* key) {
+  return matrix_of_value(root.find(key), key);
 }
 
 class CompareStSim : public ::testing::Test {
@@ -85,9 +88,9 @@ class CompareStSim : public ::testing::Test {
   fs::path dir_;
 };
 
-TEST_F(CompareStSim, TheReportsShowStSimAsTheSimilarityTakesItAndTheJsonKeepsThePlainMetric) {
+TEST_F(CompareStSim, TheReportsShowThePlainMetricAndTheConfusionIsTheDiscriminationModels) {
   // a: the tone; b: the same tone a sixth of a cycle later (the same levels, another waveform);
-  // c: the tone for half a second, then its fading ring, where a is still felt.
+  // c: the tone for half a second, then its fading ring.
   const std::vector<std::vector<float>> signals{tone(0.0), tone(kPi / 3.0), tone(0.0, 0.5)};
   const std::vector<std::string> names{"a.csv", "b.csv", "c.csv"};
   for (std::size_t i = 0; i < 3; ++i) write_signal_csv(dir_ / names[i], signals[i]);
@@ -99,68 +102,71 @@ TEST_F(CompareStSim, TheReportsShowStSimAsTheSimilarityTakesItAndTheJsonKeepsThe
   const auto parsed = parse_json(read_text(dir_ / "r.json"), "r.json");
   ASSERT_TRUE(parsed.value);
   const auto stsim = matrix_of(*parsed.value, "stsim");
-  const auto plain = matrix_of(*parsed.value, "stsim_plain");
-  const auto similarity = matrix_of(*parsed.value, "similarity");
+  const auto distance = matrix_of(*parsed.value, "distance_jnd");
+  const auto confusion = matrix_of(*parsed.value, "predicted_confusion");
   ASSERT_EQ(stsim.size(), 3u);
-  ASSERT_EQ(plain.size(), 3u);
-  ASSERT_EQ(similarity.size(), 3u);
+  ASSERT_EQ(distance.size(), 3u);
+  ASSERT_EQ(confusion.size(), 3u);
+  const JsonValue* cues = parsed.value->find("cue_distances_jnd");
+  ASSERT_NE(cues, nullptr);
 
-  // The definition, from the samples as vimg compare reads them (floats at 8 kHz).
-  std::vector<PerceptualFeatures> f;
-  for (const auto& x : signals) f.push_back(analyse(std::vector<double>(x.begin(), x.end())));
-  const SimilarityConstants constants;
+  // The definitions, from the samples as vimg compare reads them (floats at 8 kHz).
+  std::vector<StSimFeatures> st;
+  std::vector<DiscriminationFeatures> df;
+  for (const auto& x : signals) {
+    const std::vector<double> wide(x.begin(), x.end());
+    st.push_back(analyse_stsim(wide));
+    df.push_back(analyse_discrimination(wide));
+  }
+  CueMatrix expected_cues(3, std::vector<CueDistances>(3, CueDistances{}));
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t j = 0; j < 3; ++j) {
       if (i == j) {
         EXPECT_EQ(stsim[i][j], 1.0);
         continue;
       }
-      const std::size_t blocks = std::min(f[i].stsim.blocks, f[j].stsim.blocks);
-      std::vector<std::uint8_t> felt(blocks);
-      for (std::size_t k = 0; k < blocks; ++k) felt[k] = (f[i].levels.felt_block[k] | f[j].levels.felt_block[k]) != 0;
-      const auto over_felt = stsim_over_blocks(f[i].stsim, f[j].stsim, felt);
-      ASSERT_TRUE(over_felt.has_value());
-      EXPECT_GE(stsim[i][j], 0.0) << i << "," << j;
-      EXPECT_LE(stsim[i][j], 1.0) << i << "," << j;
-      EXPECT_NEAR(stsim[i][j], bounded(over_felt->value), 1e-12) << i << "," << j;
-      EXPECT_NEAR(plain[i][j], stsim_common_length(f[i].stsim, f[j].stsim)->value, 1e-9 * std::max(1.0, std::fabs(plain[i][j])))
+      EXPECT_NEAR(stsim[i][j], stsim_common_length(st[i], st[j])->value, 1e-9 * std::max(1.0, std::fabs(stsim[i][j])))
           << i << "," << j;
-      // similarity = (1 - v (1 - S)) L: S the smaller direction, v = min(1, felt / 10 dB),
-      // L = 2^(-D / 20 dB), D the largest difference of felt level over the bands.
-      const double s = std::min(stsim[i][j], stsim[j][i]);
-      const double v = std::min(1.0, std::max(f[i].levels.max_felt_db(), f[j].levels.max_felt_db()) / constants.full_structure_db);
-      double d = 0.0;
-      for (std::size_t band = 0; band < kSensationBands; ++band) {
-        d = std::max(d, std::fabs(f[i].levels.felt_db(band) - f[j].levels.felt_db(band)));
+      expected_cues[i][j] = cue_distances(df[i], df[j]);
+      for (std::size_t c = 0; c < kCueCount; ++c) {
+        const auto per_cue = matrix_of_value(cues->find(std::string(cue_name(c))), "a cue");
+        ASSERT_EQ(per_cue.size(), 3u);
+        EXPECT_NEAR(per_cue[i][j], expected_cues[i][j][c], 1e-9) << cue_name(c);
       }
-      EXPECT_NEAR(similarity[i][j], (1.0 - v * (1.0 - s)) * std::exp2(-d / constants.level_halving_db), 1e-12) << i << "," << j;
+      EXPECT_NEAR(distance[i][j], combined_distance_jnd(expected_cues[i][j]), 1e-9);
     }
   }
-  // The case that made the report unreadable: a against the fading ring of c runs past 1 in the
-  // plain metric; the report shows 1, and the pair's structure is c's direction, below 1.
-  EXPECT_GT(plain[0][2], 1.0);
-  EXPECT_EQ(stsim[0][2], 1.0);
-  EXPECT_LT(stsim[2][0], 1.0);
-  // The same tone shifted: a structure between nothing and the same waveform.
-  EXPECT_GT(stsim[0][1], 0.0);
+  const PerceptionMatrix expected = discrimination_confusion(expected_cues);
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) EXPECT_NEAR(confusion[i][j], expected[i][j], 1e-9) << i << "," << j;
+  }
+  // ST-SIM no longer decides: the phase-shifted tone has a waveform far from a's, yet it is felt
+  // alike (a and b split their rows evenly against each other, c's fading ring stands apart).
   EXPECT_LT(stsim[0][1], 0.9);
+  EXPECT_NEAR(confusion[0][1], confusion[0][0], 0.05);
+  // Against a reference that is only a fading ring the metric runs past 1; the report keeps it.
+  EXPECT_GT(stsim[0][2], 1.0);
 
-  // The CSV's stsim column is the JSON's.
+  // The CSV's columns are the JSON's.
   std::istringstream csv(read_text(dir_ / "r.csv"));
   std::string line;
   std::getline(csv, line);
-  EXPECT_EQ(line, "image_i,image_j,stsim,similarity,predicted_p");
+  EXPECT_EQ(line, "image_i,image_j,stsim,level_jnd,pitch_jnd,envelope_jnd,distance_jnd,predicted_p");
   for (std::size_t row = 0; std::getline(csv, line); ++row) {
     ASSERT_LT(row, 9u);
     std::vector<std::string> cells;
     std::stringstream cut(line);
     for (std::string cell; std::getline(cut, cell, ',');) cells.push_back(cell);
-    ASSERT_EQ(cells.size(), 5u) << line;
-    EXPECT_EQ(std::stod(cells[2]), stsim[row / 3][row % 3]) << line;
+    ASSERT_EQ(cells.size(), 8u) << line;
+    const std::size_t i = row / 3, j = row % 3;
+    EXPECT_EQ(std::stod(cells[2]), stsim[i][j]) << line;
+    for (std::size_t c = 0; c < kCueCount; ++c) EXPECT_NEAR(std::stod(cells[3 + c]), expected_cues[i][j][c], 1e-9) << line;
+    EXPECT_EQ(std::stod(cells[6]), distance[i][j]) << line;
+    EXPECT_EQ(std::stod(cells[7]), confusion[i][j]) << line;
   }
-  // The page says what the numbers mean, and its ST-SIM table holds only numbers in [0, 1].
+  // The page says what ST-SIM is and shows the same numbers.
   const std::string html = read_text(dir_ / "r.html");
-  EXPECT_NE(html.find("1 the same waveform, 0 nothing in common"), std::string::npos);
+  EXPECT_NE(html.find("It does not decide the prediction"), std::string::npos);
   const std::size_t table = html.find("<th class=\"name\">ST-SIM of");
   ASSERT_NE(table, std::string::npos);
   const std::string cells = html.substr(table, html.find("</table>", table) - table);
@@ -171,8 +177,8 @@ TEST_F(CompareStSim, TheReportsShowStSimAsTheSimilarityTakesItAndTheJsonKeepsThe
     const std::size_t end = cells.find("</td>", begin);
     ASSERT_NE(end, std::string::npos);
     const double v = std::stod(cells.substr(begin, end - begin));
-    EXPECT_GE(v, 0.0);
-    EXPECT_LE(v, 1.0);
+    EXPECT_NEAR(v, stsim[static_cast<std::size_t>(numbers) / 3][static_cast<std::size_t>(numbers) % 3],
+                5e-4 * std::max(1.0, std::fabs(v)));
     ++numbers;
   }
   EXPECT_EQ(numbers, 9);

@@ -59,7 +59,7 @@ TEST_F(Compare, TwoCopiesOfAnImageAreLikelyConfusedAndSplitTheirRowsEvenly) {
     EXPECT_NEAR(r.predicted_confusion[row][0] + r.predicted_confusion[row][1], 1.0, 1e-3);
   }
   EXPECT_DOUBLE_EQ(r.stsim[0][1], 1.0);
-  EXPECT_DOUBLE_EQ(r.similarity[0][1], 1.0);
+  EXPECT_EQ(r.distance_jnd[0][1], 0.0);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_EQ(r.warnings[0], "A.vimg ~ B.vimg: likely confused (p = 0.50)");
   ASSERT_EQ(r.likely_confused.size(), 1u);
@@ -94,7 +94,7 @@ TEST_F(Compare, TexturesDifferingOnlyBelowTheLraBandAreMoreConfusableOnTheLra) {
   const CompareResult l = run_compare(on_lra);
   ASSERT_TRUE(i.ok());
   ASSERT_TRUE(l.ok());
-  EXPECT_GT(l.similarity[0][1], i.similarity[0][1]);
+  EXPECT_LT(l.distance_jnd[0][1], i.distance_jnd[0][1]);
   EXPECT_GT(l.predicted_confusion[0][1], i.predicted_confusion[0][1]);
   EXPECT_GT(l.predicted_confusion[1][0], i.predicted_confusion[1][0]);
   EXPECT_TRUE(i.warnings.empty());

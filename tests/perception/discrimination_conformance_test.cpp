@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 
@@ -46,31 +47,40 @@ Range published(const std::string& quantity, double frequency_hz) {
   return r;
 }
 
-double confusion(const Tone& a, const Tone& b) {
-  const DiscriminationFeatures fa = analyse_discrimination(render_tone(a), strong_actuator());
-  const DiscriminationFeatures fb = analyse_discrimination(render_tone(b), strong_actuator());
-  return two_alternative_confusion(combined_distance_jnd(cue_distances(fa, fb)));
+DiscriminationFeatures features(const Tone& t) { return analyse_discrimination(render_tone(t), strong_actuator()); }
+
+double confusion(const DiscriminationFeatures& a, const Tone& b) {
+  return two_alternative_confusion(combined_distance_jnd(cue_distances(a, features(b))));
 }
+
+double confusion(const Tone& a, const Tone& b) { return confusion(features(a), b); }
 
 // The difference x in [low, high] at which `p(x)`, falling, crosses 0.25 (bisection).
 double jnd(const std::function<double(double)>& p, double low, double high) {
-  for (int i = 0; i < 40; ++i) {
+  for (int i = 0; i < 24; ++i) {
     const double mid = 0.5 * (low + high);
     (p(mid) > 0.25 ? low : high) = mid;
   }
   return 0.5 * (low + high);
 }
 
-constexpr double kFrequenciesHz[] = {25.0, 50.0, 100.0, 200.0, 300.0};
+constexpr double kFrequenciesHz[] = {25.0, 40.0, 50.0, 80.0, 100.0, 150.0, 200.0, 250.0, 300.0};
+
+// One line per measured JND on the test's output, for scripts/plot_perception_conformance.py:
+// conformance,QUANTITY,FREQUENCY_HZ,SENSATION_LEVEL_DB,MODEL,PUBLISHED_LOW,PUBLISHED_HIGH
+void report(const char* quantity, double frequency_hz, double sl_db, double model, const Range& r) {
+  std::printf("conformance,%s,%g,%g,%.4f,%g,%g\n", quantity, frequency_hz, sl_db, model, r.low, r.high);
+}
 constexpr double kLevelsDb[] = {20.0, 30.0};
 
 TEST(DiscriminationConformance, FrequencyWeberFractionIsThePublishedOne) {
   for (double f : kFrequenciesHz) {
     const Range wf = published("frequency_weber_fraction", f);
     for (double sl : kLevelsDb) {
-      const Tone reference{f, sl};
+      const DiscriminationFeatures reference = features(Tone{f, sl});
       const auto p = [&](double fraction) { return confusion(reference, Tone{f * (1.0 + fraction), sl}); };
       const double model = jnd(p, 0.0, 1.0);
+      report("frequency_weber_fraction", f, sl, model, wf);
       EXPECT_GE(model, wf.low) << f << " Hz at " << sl << " dB SL";
       EXPECT_LE(model, wf.high) << f << " Hz at " << sl << " dB SL";
       const double at_middle = p(wf.middle());
@@ -86,9 +96,10 @@ TEST(DiscriminationConformance, AmplitudeJndIsThePublishedOne) {
   for (double f : kFrequenciesHz) {
     const Range db = published("amplitude_jnd_db", f);
     for (double sl : kLevelsDb) {
-      const Tone reference{f, sl};
+      const DiscriminationFeatures reference = features(Tone{f, sl});
       const auto p = [&](double step_db) { return confusion(reference, Tone{f, sl + step_db}); };
       const double model = jnd(p, 0.0, 10.0);
+      report("amplitude_jnd_db", f, sl, model, db);
       EXPECT_GE(model, db.low) << f << " Hz at " << sl << " dB SL";
       EXPECT_LE(model, db.high) << f << " Hz at " << sl << " dB SL";
       const double at_middle = p(db.middle());
@@ -104,12 +115,14 @@ TEST(DiscriminationConformance, GapDetectionIsThePublishedOne) {
   const Range ms = published("gap_detection_ms", 250.0);
   for (double sl : {30.0, 40.0}) {
     const Tone steady{250.0, sl};
+    const DiscriminationFeatures reference = features(steady);
     const auto p = [&](double gap_ms) {
       Tone gapped = steady;
       gapped.gap_ms = gap_ms;
-      return confusion(steady, gapped);
+      return confusion(reference, gapped);
     };
     const double model = jnd(p, 0.5, 30.0);
+    report("gap_detection_ms", 250.0, sl, model, ms);
     EXPECT_GE(model, ms.low) << sl << " dB SL";
     EXPECT_LE(model, ms.high) << sl << " dB SL";
     const double at_middle = p(ms.middle());
@@ -123,6 +136,9 @@ TEST(DiscriminationConformance, GapDetectionIsThePublishedOne) {
 TEST(DiscriminationConformance, ThresholdIsThePublishedDisplacement) {
   const Range pacinian_um = published("detection_threshold_peak_displacement_um", 250.0);
   const Range floor_um = published("detection_threshold_peak_displacement_um", 25.0);
+  for (double f : {10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 80.0, 100.0, 125.0, 150.0, 200.0, 250.0, 300.0, 400.0, 500.0}) {
+    std::printf("conformance,threshold_peak_displacement_um,%g,,%.4g,,\n", f, skin_threshold_peak_displacement_m(f) * 1e6);
+  }
   EXPECT_GE(skin_threshold_peak_displacement_m(250.0) * 1e6, pacinian_um.low);
   EXPECT_LE(skin_threshold_peak_displacement_m(250.0) * 1e6, pacinian_um.high);
   for (double f : {10.0, 20.0, 25.0, 40.0}) {
