@@ -16,8 +16,9 @@
 namespace vimg::web {
 
 inline constexpr std::size_t kKeptEventMessages = 256;
-// At most this many pages listen at once; a further /events gets 503 (each open stream holds one
-// of the server's worker threads, and pages must still be able to fetch their files).
+// How often an idle stream sends a comment, so that a page that has gone is noticed.
+inline constexpr std::chrono::seconds kEventKeepAlive{15};
+// At most this many pages listen at once; a further /events gets 503.
 inline constexpr int kMaxEventStreams = 8;
 
 // "event: EVENT\ndata: LINE\n...\n\n": every line of `data` in a data field of its own, as the

@@ -1,15 +1,13 @@
 #include "web/server/web_server.hpp"
 
-#include <httplib.h>
-
 #include <atomic>
-#include <utility>
 #include <cstdio>
-#include <thread>
+#include <utility>
 
 #include "storage/read_file.hpp"
 #include "web/server/content_type.hpp"
 #include "web/server/event_stream.hpp"
+#include "web/server/http_engine.hpp"
 #include "web/server/site_path.hpp"
 
 namespace vimg::web {
@@ -18,8 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// How often an idle event stream sends a comment, so that a page that has gone is noticed.
-constexpr std::chrono::seconds kEventKeepAlive{15};
 constexpr std::size_t kMaxLoggedPathChars = 200;
 
 // The path as the log shows it: control characters and non-ASCII bytes as \xHH, cut at
@@ -40,38 +36,28 @@ std::string loggable(const std::string& text) {
   return out;
 }
 
-void set_text(httplib::Response& res, int status, const std::string& text) {
-  res.status = status;
-  res.set_content(text + "\n", "text/plain; charset=utf-8");
-}
-
 }  // namespace
 
 struct WebServer::Impl {
-  explicit Impl(WebServerOptions o) : options(std::move(o)) {}
+  explicit Impl(WebServerOptions o) : options(std::move(o)), engine(routes()) {}
   WebServerOptions options;
   fs::path site_root;  // canonical
-  std::unique_ptr<httplib::Server> server_owned;  // an SSLServer with TLS
-  httplib::Server& server = make_server();
   EventBroadcaster events;
-  std::thread listener;
+  HttpEngine engine;
   std::atomic<bool> running{false};
-  std::atomic<bool> listen_ended{false};
-  int port = 0;
 
-  httplib::Server& make_server() {
-    if (options.tls_cert_pem.empty() && options.tls_key_pem.empty()) {
-      server_owned = std::make_unique<httplib::Server>();
-    } else {
-      server_owned = std::make_unique<httplib::SSLServer>(options.tls_cert_pem.c_str(), options.tls_key_pem.c_str());
-    }
-    return *server_owned;
-  }
-
-  // The TLS certificate and key could not be read (start() says so).
-  bool tls_invalid() const {
-    if (options.tls_cert_pem.empty() && options.tls_key_pem.empty()) return false;
-    return !static_cast<const httplib::SSLServer&>(*server_owned).is_valid();
+  HttpRoutes routes() {
+    HttpRoutes r;
+    r.refuse = [this](const HttpRequest& request) { return refusal(request); };
+    r.respond = [this](const HttpRequest& request) { return respond(request); };
+    r.log = [this](const HttpRequest& request, const HttpReply& reply) {
+      const std::size_t bytes = request.method == "HEAD" || reply.event_stream ? 0 : reply.body.size();
+      log(loggable(request.method) + " " + loggable(request.path.empty() ? request.target : request.path) + " " +
+          std::to_string(reply.status) + " " + std::to_string(bytes));
+    };
+    r.events = &events;
+    r.max_body_bytes = kMaxRequestBodyBytes;
+    return r;
   }
 
   bool api_post_path(const std::string& path) const {
@@ -82,20 +68,31 @@ struct WebServer::Impl {
     return false;
   }
 
-  void serve_api(const httplib::Request& req, httplib::Response& res) const {
-    ApiRequest request;
-    request.method = req.method;
-    request.path = req.path;
-    const std::size_t question = req.target.find('?');
-    if (question != std::string::npos) request.query = req.target.substr(question + 1);
-    request.host = req.get_header_value("Host");
-    request.origin = req.get_header_value("Origin");
-    request.key = req.get_header_value("X-Vimg-Key");
-    request.content_type = req.get_header_value("Content-Type");
-    request.body = req.body;
-    const ApiReply reply = options.api(request);
-    res.status = reply.status;
-    res.set_content(reply.body, reply.content_type);
+  // GET and HEAD, and POST of the API's paths, go on; anything else is 405 (its body never read).
+  std::optional<HttpReply> refusal(const HttpRequest& request) const {
+    if (request.method == "GET" || request.method == "HEAD") return std::nullopt;
+    if (request.method == "POST" && api_post_path(request.path)) return std::nullopt;
+    HttpReply reply = text_reply(405, "method not allowed: this server is read-only (GET and HEAD)");
+    reply.headers.emplace_back("Allow", "GET, HEAD");
+    reply.close = true;
+    return reply;
+  }
+
+  HttpReply respond(const HttpRequest& request) {
+    if (request.method == "POST") return serve_api(request);
+    if (request.path == "/events") return serve_events(request);
+    if (options.api && request.path.rfind("/api/", 0) == 0) return serve_api(request);
+    return serve_file(request);
+  }
+
+  HttpReply serve_api(const HttpRequest& request) const {
+    const ApiReply api = options.api(ApiRequest{request.method, request.path, request.query, request.host,
+                                                request.origin, request.key, request.content_type, request.body});
+    HttpReply reply;
+    reply.status = api.status;
+    reply.content_type = api.content_type;
+    reply.body = api.body;
+    return reply;
   }
 
   void log(const std::string& line) const {
@@ -106,82 +103,37 @@ struct WebServer::Impl {
     }
   }
 
-  void serve_events(const httplib::Request& req, httplib::Response& res) {
-    if (req.method == "HEAD") {
-      res.set_content("", "text/event-stream");
-      return;
-    }
+  HttpReply serve_events(const HttpRequest& request) {
+    HttpReply reply;
+    reply.content_type = "text/event-stream";
+    if (request.method == "HEAD") return reply;
     const std::int64_t cursor = events.open_stream();
-    if (cursor < 0) {
-      set_text(res, 503, "too many open event streams (at most " + std::to_string(kMaxEventStreams) + ")");
-      return;
-    }
-    auto state = std::make_shared<std::int64_t>(cursor);
-    auto greeted = std::make_shared<bool>(false);
-    res.set_header("X-Accel-Buffering", "no");
-    res.set_chunked_content_provider(
-        "text/event-stream",
-        [this, state, greeted](std::size_t, httplib::DataSink& sink) {
-          if (!*greeted) {
-            *greeted = true;  // the page (or a test) knows from this comment that it will get every later save
-            static constexpr std::string_view kHello = ": connected\nretry: 1000\n\n";
-            return sink.write(kHello.data(), kHello.size());
-          }
-          const EventBroadcaster::Wait wait = events.wait_after(*state, kEventKeepAlive);
-          if (wait.closed) return false;
-          const std::string text = wait.text.empty() ? std::string(": keep-alive\n\n") : wait.text;
-          return sink.write(text.data(), text.size());
-        },
-        [this](bool) { events.close_stream(); });
+    if (cursor < 0) return text_reply(503, "too many open event streams (at most " + std::to_string(kMaxEventStreams) + ")");
+    reply.headers.emplace_back("X-Accel-Buffering", "no");
+    reply.event_stream = true;
+    reply.stream_cursor = cursor;
+    // The page (or a test) knows from this comment that it will get every later save.
+    reply.body = ": connected\nretry: 1000\n\n";
+    return reply;
   }
 
-  void serve_file(const httplib::Request& req, httplib::Response& res) const {
-    const SiteLookup lookup = find_site_file(site_root, req.path);
-    if (lookup.status == SiteLookupStatus::forbidden) return set_text(res, 403, "forbidden: " + lookup.reason);
-    if (lookup.status == SiteLookupStatus::not_found) return set_text(res, 404, "not found");
-    const FileReadResult read = read_regular_file(lookup.file, kMaxServedFileBytes, FinalSymlink::refuse);
+  HttpReply serve_file(const HttpRequest& request) const {
+    const SiteLookup lookup = find_site_file(site_root, request.path);
+    if (lookup.status == SiteLookupStatus::forbidden) return text_reply(403, "forbidden: " + lookup.reason);
+    if (lookup.status == SiteLookupStatus::not_found) return text_reply(404, "not found");
+    FileReadResult read = read_regular_file(lookup.file, kMaxServedFileBytes, FinalSymlink::refuse);
     if (!read.bytes) {
       log("cannot read " + lookup.file.string() + ": " + read.error);
-      return set_text(res, 500, "the file cannot be read");
+      return text_reply(500, "the file cannot be read");
     }
-    res.status = 200;
-    res.set_content(*read.bytes, content_type_of(lookup.file));
-  }
-
-  void configure() {
-    server.new_task_queue = [] { return new httplib::ThreadPool(kServerWorkerThreads); };
-    server.set_payload_max_length(kMaxRequestBodyBytes);
-    server.set_keep_alive_timeout(1);  // an idle connection holds a worker; stop() waits for it
-    server.set_default_headers({{"Cache-Control", "no-store"}, {"X-Content-Type-Options", "nosniff"}});
-    server.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-      if (req.method == "GET" || req.method == "HEAD") return httplib::Server::HandlerResponse::Unhandled;
-      if (req.method == "POST" && api_post_path(req.path)) return httplib::Server::HandlerResponse::Unhandled;
-      set_text(res, 405, "method not allowed: this server is read-only (GET and HEAD)");
-      res.set_header("Allow", "GET, HEAD");
-      res.set_header("Connection", "close");  // a body, if any, is never read
-      return httplib::Server::HandlerResponse::Handled;
-    });
-    server.Get("[\\s\\S]*", [this](const httplib::Request& req, httplib::Response& res) {
-      if (req.path == "/events") {
-        serve_events(req, res);
-      } else if (options.api && req.path.rfind("/api/", 0) == 0) {
-        serve_api(req, res);
-      } else {
-        serve_file(req, res);
-      }
-    });
-    server.Post("[\\s\\S]*", [this](const httplib::Request& req, httplib::Response& res) { serve_api(req, res); });
-    server.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
-      const std::size_t bytes = req.method == "HEAD" ? 0 : res.body.size();
-      log(loggable(req.method) + " " + loggable(req.path.empty() ? req.target : req.path) + " " +
-          std::to_string(res.status) + " " + std::to_string(bytes));
-    });
+    HttpReply reply;
+    reply.content_type = content_type_of(lookup.file);
+    reply.body = std::move(*read.bytes);
+    return reply;
   }
 };
 
-WebServer::WebServer(WebServerOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
-  impl_->configure();
-}
+WebServer::WebServer(WebServerOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
 
 WebServer::~WebServer() { stop(); }
 
@@ -191,34 +143,19 @@ std::optional<std::string> WebServer::start() {
   std::error_code ec;
   s.site_root = fs::canonical(s.options.site_dir, ec);
   if (ec || !fs::is_directory(s.site_root)) return s.options.site_dir.string() + ": not a folder that can be served";
-  if (s.tls_invalid()) {
-    return s.options.tls_cert_pem.string() + ", " + s.options.tls_key_pem.string() +
-           ": cannot be read as a PEM certificate and its private key";
-  }
-  if (s.options.port == 0) {
-    s.port = s.server.bind_to_any_port(s.options.host);
-  } else {
-    s.port = s.server.bind_to_port(s.options.host, s.options.port) ? s.options.port : -1;
-  }
-  if (s.port <= 0) {
-    return "cannot listen on " + s.options.host + ":" + std::to_string(s.options.port) +
-           " (the port is in use, or the address is not this machine's)";
-  }
+  const HttpEndpoint endpoint{s.options.host, s.options.port, s.options.tls_cert_pem.string(), s.options.tls_key_pem.string()};
+  if (auto problem = s.engine.start(endpoint)) return problem;
   s.running = true;
-  s.listen_ended = false;
-  s.listener = std::thread([&s] {
-    s.server.listen_after_bind();
-    s.listen_ended = true;
-  });
   return std::nullopt;
 }
 
-int WebServer::port() const { return impl_->port; }
+int WebServer::port() const { return impl_->engine.port(); }
 
-bool WebServer::running() const { return impl_->running && !impl_->listen_ended; }
+bool WebServer::running() const { return impl_->running; }
 
 void WebServer::publish_image_changed(const std::string& name) {
   impl_->events.publish(format_event_message("image", name));
+  impl_->engine.wake_event_streams();
 }
 
 int WebServer::open_event_streams() const { return impl_->events.open_streams(); }
@@ -227,8 +164,7 @@ void WebServer::stop() {
   Impl& s = *impl_;
   if (!s.running.exchange(false)) return;
   s.events.close();
-  s.server.stop();
-  if (s.listener.joinable()) s.listener.join();
+  s.engine.stop();
 }
 
 }  // namespace vimg::web

@@ -1,11 +1,15 @@
 #pragma once
-// The read-only server of a built web site (docs/web.md, "Serving"), on cpp-httplib:
+// The read-only server of a built web site (docs/web.md, "Serving"), event driven on Boost.Beast
+// (web/server/http_engine.hpp: one network thread, the routes on a few workers; an idle or slow
+// connection costs no worker):
 //   - GET and HEAD only; any other method gets 405 with "Allow: GET, HEAD" and the connection closes;
 //   - the site's folder only (web/server/site_path.hpp): '..' (also percent-encoded) and symbolic
 //     links out of the folder are forbidden (403), a folder without index.html is not found (404),
 //     nothing is ever listed;
-//   - bounded requests: a request line (URI) beyond 8 KiB gets 414 and a header line beyond 8 KiB
-//     400 (the limits Debian's libcpp-httplib is built with), a body beyond kMaxRequestBodyBytes 413;
+//   - bounded requests (web/server/http_message.hpp): a request line (URI) beyond 8 KiB gets 414
+//     and a header line beyond 8 KiB 400, a body beyond kMaxRequestBodyBytes 413; the header must
+//     be complete within 5 s of connecting (or of the last reply) and the body within 5 s after;
+//     at most 4000 connections at once (503 beyond), none per address;
 //     a file beyond kMaxServedFileBytes is not served (500);
 //   - every response says Cache-Control: no-store (a page always fetches the latest save) and
 //     X-Content-Type-Options: nosniff; the Content-Type comes from web/server/content_type.hpp;
@@ -13,7 +17,8 @@
 //   - one log line per request: "METHOD PATH STATUS BYTES" (control characters escaped; the query
 //     is never logged);
 //   - with an `api` (vimg serve --study, web/study_server/), GET of /api/... and POST of the paths
-//     in `api_post_paths` go to it instead; every other POST is refused as above;
+//     in `api_post_paths` go to it instead; every other POST is refused as above; the api is called
+//     from several workers at once;
 //   - with `tls_cert_pem` and `tls_key_pem`, HTTPS (a secure context on a LAN).
 // The server runs on threads of its own between start() and stop() (or the destructor).
 #include <cstddef>
@@ -28,7 +33,6 @@ namespace vimg::web {
 
 inline constexpr std::size_t kMaxRequestBodyBytes = 4096;
 inline constexpr std::size_t kMaxServedFileBytes = std::size_t{64} << 20;
-inline constexpr int kServerWorkerThreads = 24;
 
 // A request to the API, without the library's types: what web/study_server/ needs of it.
 struct ApiRequest {

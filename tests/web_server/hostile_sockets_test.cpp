@@ -1,0 +1,148 @@
+// Idle and slow connections cost the server no worker (docs/web.md, "Serving"): while a few dozen
+// sockets say nothing and a few dozen more send their headers a byte at a time (each reconnecting at
+// once when the server closes it, as a hostile client does), a participant's answers through the API
+// and a page's file are each confirmed within kPromptBound of being sent. A server that gives each
+// connection a worker of a fixed pool (24) has every worker held by the slow sockets and answers
+// nobody. The hostile sockets' pace is theirs; the test waits only on states (all hostile sockets
+// connected, each reply's bytes), and kPromptBound is generous: the server answers in milliseconds.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/web_server/raw_http.hpp"
+#include "tests/web_server/site_fixture.hpp"
+
+namespace vimg::test {
+namespace {
+
+using HostileSockets = SiteFixture;
+using Clock = std::chrono::steady_clock;
+
+constexpr int kSilentSockets = 40;
+constexpr int kSlowSockets = 30;  // more than the 24 workers a thread-per-connection server had
+constexpr int kAnswers = 20;
+constexpr std::chrono::seconds kPromptBound{5};
+constexpr std::chrono::milliseconds kSlowBytePeriod{200};
+
+int connect_to(int port) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(port));
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (fd >= 0 && ::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0) return fd;
+  if (fd >= 0) ::close(fd);
+  return -1;
+}
+
+// The hostile clients, on a thread of their own: silent sockets never send; slow ones send a request
+// line and then one header byte every kSlowBytePeriod. A socket the server closed is opened again.
+class HostileClients {
+ public:
+  explicit HostileClients(int port) : port_(port), thread_([this] { run(); }) {}
+  ~HostileClients() {
+    stop_ = true;
+    thread_.join();
+  }
+  // Whether every hostile socket has been connected at least once.
+  bool all_connected() const { return connected_ >= kSilentSockets + kSlowSockets; }
+  int reopened() const { return reopened_; }
+
+ private:
+  struct Socket {
+    int fd = -1;
+    bool slow = false;
+  };
+  void open(Socket& s) {
+    s.fd = connect_to(port_);
+    if (s.fd >= 0 && s.slow) ::send(s.fd, "GET / HTTP/1.1\r\nX-Slow: ", 24, MSG_NOSIGNAL);
+    if (s.fd >= 0) ::fcntl(s.fd, F_SETFL, O_NONBLOCK);
+  }
+  void run() {
+    std::vector<Socket> sockets(kSilentSockets + kSlowSockets);
+    for (int i = 0; i < kSilentSockets + kSlowSockets; ++i) {
+      sockets[static_cast<std::size_t>(i)].slow = i >= kSilentSockets;
+      open(sockets[static_cast<std::size_t>(i)]);
+      if (sockets[static_cast<std::size_t>(i)].fd >= 0) ++connected_;
+    }
+    auto next_byte = Clock::now() + kSlowBytePeriod;
+    while (!stop_) {
+      std::vector<pollfd> fds;
+      for (const Socket& s : sockets) fds.push_back({s.fd, POLLIN, 0});
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(next_byte - Clock::now());
+      ::poll(fds.data(), fds.size(), static_cast<int>(std::max<std::int64_t>(0, left.count())));
+      for (std::size_t i = 0; i < sockets.size(); ++i) {
+        char scratch[512];
+        if (sockets[i].fd < 0 || (fds[i].revents != 0 && ::recv(sockets[i].fd, scratch, sizeof scratch, 0) <= 0)) {
+          if (sockets[i].fd >= 0) ::close(sockets[i].fd);
+          open(sockets[i]);  // the server closed it: come back at once
+          ++reopened_;
+          if (connected_ < kSilentSockets + kSlowSockets && sockets[i].fd >= 0) ++connected_;
+        }
+      }
+      if (Clock::now() >= next_byte) {
+        for (const Socket& s : sockets) {
+          if (s.slow && s.fd >= 0) ::send(s.fd, "a", 1, MSG_NOSIGNAL);
+        }
+        next_byte += kSlowBytePeriod;
+      }
+    }
+    for (const Socket& s : sockets) {
+      if (s.fd >= 0) ::close(s.fd);
+    }
+  }
+
+  int port_;
+  std::atomic<bool> stop_{false};
+  std::atomic<int> connected_{0};
+  std::atomic<int> reopened_{0};
+  std::thread thread_;
+};
+
+// One request; the status, or 0 when no reply came within kPromptBound.
+int answered_promptly(int port, const std::string& request) {
+  RawConnection connection(port);
+  if (!connection.connected() || !connection.send_all(request)) return 0;
+  if (!connection.read_to_end(kPromptBound)) return 0;
+  return parse_response(connection.received()).status;
+}
+
+TEST_F(HostileSockets, AParticipantIsAnsweredBesideSilentAndSlowSockets) {
+  std::mutex answers_mutex;
+  std::vector<std::string> answers;
+  WebServerOptions options;
+  options.site_dir = site_;
+  options.log_line = [](const std::string&) {};
+  options.api = [&](const web::ApiRequest& request) {
+    const std::lock_guard lock(answers_mutex);
+    answers.push_back(request.body);
+    return web::ApiReply{200, "application/json", "{\"completed\": " + std::to_string(answers.size()) + "}"};
+  };
+  options.api_post_paths = {"/api/answer"};
+  server_ = std::make_unique<WebServer>(options);
+  ASSERT_FALSE(server_->start());
+  HostileClients hostile(port());
+  while (!hostile.all_connected()) std::this_thread::yield();  // a state: every hostile socket is in
+  for (int trial = 1; trial <= kAnswers; ++trial) {
+    const std::string body = "trial=" + std::to_string(trial);
+    const auto sent = Clock::now();
+    const int status = answered_promptly(port(), "POST /api/answer HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n"
+                                                 "Content-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body);
+    ASSERT_EQ(status, 200) << "answer " << trial << " not confirmed within " << kPromptBound.count() << " s (after "
+                           << std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - sent).count() << " ms)";
+    ASSERT_EQ(answered_promptly(port(), "GET /index.html HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"), 200)
+        << "after answer " << trial;
+  }
+  const std::lock_guard lock(answers_mutex);
+  ASSERT_EQ(answers.size(), std::size_t{kAnswers});
+  for (int trial = 1; trial <= kAnswers; ++trial) EXPECT_EQ(answers[trial - 1], "trial=" + std::to_string(trial));
+}
+
+}  // namespace
+}  // namespace vimg::test
