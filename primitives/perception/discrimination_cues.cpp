@@ -18,6 +18,7 @@ constexpr std::size_t kBins = detail::kPowerSpectrumBins;
 constexpr std::size_t kHop = kN / 2;
 constexpr double kBinHz = kStSimSampleRateHz / static_cast<double>(kN);
 constexpr double kEnvelopeStepMs = 1000.0 * static_cast<double>(kEnvelopeStepSamples) / kStSimSampleRateHz;
+constexpr std::size_t kSlowEnvelopeStride = 8;  // steps between computed values of the slow envelope
 
 double to_db(double power) { return power > 0.0 ? 10.0 * std::log10(power) : kSilentLevelDb; }
 
@@ -145,16 +146,26 @@ DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8kh
   }
   const std::vector<double> slow_window = hann_window(kSlowEnvelopeWindowMs / kEnvelopeStepMs);
   const std::size_t slow_half = slow_window.size() / 2;
-  std::vector<double> slow(steps, 0.0);
-  double peak = 0.0;
-  for (std::size_t s = 0; s < steps; ++s) {
+  // The slow envelope changes little within kSlowEnvelopeStride steps: computed there, linear between.
+  const auto slow_at = [&](std::size_t s) {
     double mean = 0.0;
     for (std::size_t i = 0; i < slow_window.size(); ++i) {
       const std::ptrdiff_t k = static_cast<std::ptrdiff_t>(s + i) - static_cast<std::ptrdiff_t>(slow_half);
       if (k >= 0 && static_cast<std::size_t>(k) < steps) mean += slow_window[i] * fast[static_cast<std::size_t>(k)];
     }
-    slow[s] = mean;
-    peak = std::max(peak, mean);
+    return mean;
+  };
+  std::vector<double> slow(steps, 0.0);
+  double peak = 0.0;
+  for (std::size_t s0 = 0; s0 < steps; s0 += kSlowEnvelopeStride) {
+    const std::size_t s1 = std::min(s0 + kSlowEnvelopeStride, steps - 1);
+    const double v0 = s0 == 0 ? slow_at(0) : slow[s0];
+    const double v1 = slow_at(s1);
+    for (std::size_t s = s0; s <= s1; ++s) {
+      const double t = s1 > s0 ? static_cast<double>(s - s0) / static_cast<double>(s1 - s0) : 0.0;
+      slow[s] = (1.0 - t) * v0 + t * v1;
+      peak = std::max(peak, slow[s]);
+    }
   }
   const double peak_db = to_db(peak);
   const auto relative = [&](double mean_square) { return std::max(to_db(mean_square) - peak_db, -f.level_db); };
