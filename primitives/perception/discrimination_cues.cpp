@@ -20,6 +20,9 @@ constexpr double kBinHz = kStSimSampleRateHz / static_cast<double>(kN);
 constexpr double kEnvelopeStepMs = 1000.0 * static_cast<double>(kEnvelopeStepSamples) / kStSimSampleRateHz;
 constexpr std::size_t kSlowEnvelopeStride = 8;  // steps between computed values of the slow envelope
 
+// The level that stands for "no energy at all", dB.
+constexpr double kSilentLevelDb = -400.0;
+
 double to_db(double power) { return power > 0.0 ? 10.0 * std::log10(power) : kSilentLevelDb; }
 
 // Per bin: (full-scale displacement / threshold)^2 of each channel.

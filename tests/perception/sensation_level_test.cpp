@@ -1,12 +1,12 @@
-// Sensation level above the vibrotactile detection threshold (docs/perception.md).
+// The vibrotactile detection threshold and the level above it (docs/perception.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "primitives/perception/discrimination_cues.hpp"
 #include "primitives/perception/sensation_level.hpp"
 #include "primitives/perception/vibrotactile_threshold.hpp"
 #include "fixture_signals.hpp"
@@ -47,13 +47,6 @@ double amplitude_at(std::size_t k, double db) {
   return threshold_displacement_m(k) * omega * omega * std::pow(10.0, db / 20.0) / 10.0;
 }
 
-std::size_t band_of(double f_hz) {
-  for (std::size_t b = 0; b < kSensationBands; ++b) {
-    if (f_hz >= kSensationBandLowHz[b] && f_hz < kSensationBandHighHz[b]) return b;
-  }
-  return kSensationBands;
-}
-
 TEST(VibrotactileThreshold, IsThePublishedCurveAtItsSamplePoints) {
   // Every bin below the reference's hold, at the frequency the reference samples it at; the
   // continuous curve is held at 0 dB from its zero crossing on, where the reference holds its first
@@ -76,76 +69,41 @@ TEST(VibrotactileThreshold, IsThePublishedCurveAtItsSamplePoints) {
   EXPECT_NEAR(threshold_peak_displacement_m(40.0, half) / threshold_peak_displacement_m(40.0), 0.5, 1e-12);
 }
 
-TEST(SensationLevel, ASineReadsItsLevelAboveThresholdInItsBand) {
-  // Sines at the reference's sample frequencies (bins 3, 4, 8, 9, 16, 18, 32, 64: 23.5 to 500.5 Hz),
-  // at amplitudes computed from the published table. The 64 ms frames spread a sine over about
-  // +-16 Hz (the Hann window's main lobe); where the threshold changes fast over that span the
-  // level leans towards the more sensitive side. Within 0.5 dB from 60 to 250 Hz (frequencies 16 Hz
-  // or more inside their band), within 4 dB below 44 Hz (one band there), within 2 dB at 500 Hz
-  // (the curve rises 1.5 dB per 7.8 Hz).
-  for (const std::size_t k : {3u, 4u, 8u, 9u, 16u, 18u, 32u, 64u}) {
+TEST(SensationLevel, ASineReadsItsLevelAboveThreshold) {
+  // Sines at the reference's sample frequencies from 62.6 to 500.5 Hz (bins 8 to 64, where the
+  // Pacinian curve is the skin's threshold), at amplitudes computed from the published table: the
+  // discrimination model's level (its strongest 512 ms frame) reads the level above threshold,
+  // within 0.5 dB up to 250 Hz and 2 dB at 500 Hz (the curve rises 1.5 dB per 7.8 Hz there), and
+  // 0 below threshold (nothing felt).
+  for (const std::size_t k : {8u, 9u, 16u, 18u, 32u, 64u}) {
     const double f = reference_frequency_hz(k);
-    const double tolerance_db = f < 44.0 ? 4.0 : f <= 251.0 ? 0.5 : 2.0;
-    for (double db : {-10.0, 0.0, 20.0}) {
-      const auto x = test::partials_signal(1.0, {{amplitude_at(k, db), f}});
-      const SensationLevels levels = sensation_levels(x);
-      EXPECT_NEAR(levels.peak_level_db[band_of(f)], db, tolerance_db) << f << " Hz, " << db << " dB";
-      EXPECT_NEAR(levels.felt_db(band_of(f)), std::max(db, 0.0), tolerance_db);
+    const double tolerance_db = f <= 251.0 ? 0.5 : 2.0;
+    for (double db : {-10.0, 5.0, 20.0}) {
+      auto x = test::partials_signal(2.0, {{amplitude_at(k, db), f}});
+      // Raised-cosine onset and offset of 20 ms (an abrupt one is a click, felt in its own right).
+      for (std::size_t n = 0; n < 160; ++n) {
+        const double ramp = 0.5 - 0.5 * std::cos(std::numbers::pi * static_cast<double>(n) / 160.0);
+        x[n] *= ramp;
+        x[x.size() - 1 - n] *= ramp;
+      }
+      EXPECT_NEAR(analyse_discrimination(x).level_db, std::max(db, 0.0), tolerance_db) << f << " Hz, " << db << " dB";
     }
   }
 }
 
 TEST(SensationLevel, FullScaleAt250HzWithTheDefaultCalibration) {
   // 10 m/s^2 at 250 Hz is 4.05 um, 32.1 dB above 0.1 um.
-  const SensationLevels levels = sensation_levels(test::partials_signal(1.0, {{1.0, 250.0}}));
-  EXPECT_NEAR(levels.peak_level_db[band_of(250.0)], 32.1, 0.3);
-  EXPECT_NEAR(levels.max_felt_db(), 32.1, 0.3);
-}
-
-TEST(SensationLevel, CalibrationShiftsEveryBand) {
-  const auto x = test::surface_signal(2.0);
-  const SensationLevels base = sensation_levels(x);
+  EXPECT_NEAR(analyse_discrimination(test::partials_signal(1.0, {{1.0, 250.0}})).level_db, 32.1, 0.3);
+  // Four times the acceleration: 12 dB more.
   LevelCalibration stronger;
-  stronger.full_scale_peak_acceleration_mps2 *= 2.0;
-  const SensationLevels shifted = sensation_levels(x, stronger);
-  for (std::size_t b = 0; b < kSensationBands; ++b) {
-    if (base.peak_level_db[b] > kSilentLevelDb + 10.0) {
-      EXPECT_NEAR(shifted.peak_level_db[b] - base.peak_level_db[b], 20.0 * std::log10(2.0), 1e-9);
-    }
-  }
+  stronger.full_scale_peak_acceleration_mps2 = 40.0;
+  EXPECT_NEAR(analyse_discrimination(test::partials_signal(1.0, {{1.0, 250.0}}), stronger).level_db, 32.1 + 12.04, 0.3);
 }
 
 TEST(SensationLevel, SilenceIsFeltNowhere) {
-  const SensationLevels levels = sensation_levels(test::silence(1.5));
-  for (double db : levels.peak_level_db) EXPECT_EQ(db, kSilentLevelDb);
-  EXPECT_EQ(levels.max_felt_db(), 0.0);
-  EXPECT_EQ(levels.felt_block.size(), 24u);  // 12000 samples: 23 blocks and a zero-padded one
-  for (auto felt : levels.felt_block) EXPECT_EQ(felt, 0);
-  EXPECT_TRUE(sensation_levels(std::vector<double>{}).felt_block.empty());
-}
-
-// docs/perception.md: a block is felt when a frame overlapping it has a band above threshold and
-// the block is not all zeros. Four blocks of 512: a full-scale 250 Hz sine, silence, the sine again,
-// then silence but for one sample of 1e-9. The frames that straddle blocks 0-1 and 2-3 are felt
-// (the sine is 32 dB above threshold), so blocks 1 and 3 have a felt frame over them; block 1 is
-// all zeros and is not felt, block 3 holds one nonzero sample and is.
-TEST(SensationLevel, ABlockIsFeltOnlyIfNotAllZeros) {
-  const auto sine = test::partials_signal(1.0, {{1.0, 250.0}});
-  std::vector<double> x(4 * 512, 0.0);
-  for (std::size_t n = 0; n < 512; ++n) x[n] = x[1024 + n] = sine[n];
-  x[1536 + 300] = 1e-9;
-  const SensationLevels levels = sensation_levels(x);
-  EXPECT_EQ(levels.felt_block, (std::vector<std::uint8_t>{1, 0, 1, 1}));
-  x[1536 + 300] = 0.0;
-  EXPECT_EQ(sensation_levels(x).felt_block, (std::vector<std::uint8_t>{1, 0, 1, 0}));
-}
-
-TEST(SensationLevel, FeltBlocksFollowTheSignal) {
-  const SensationLevels levels = sensation_levels(test::dot_signal(4.0));
-  std::size_t felt = 0;
-  for (auto f : levels.felt_block) felt += f;
-  EXPECT_GT(felt, 4u);
-  EXPECT_LT(felt, levels.felt_block.size() / 2);
+  const DiscriminationFeatures silent = analyse_discrimination(test::silence(1.5));
+  EXPECT_EQ(silent.level_db, 0.0);
+  EXPECT_EQ(analyse_discrimination(std::vector<double>{}).level_db, 0.0);
 }
 
 }  // namespace
