@@ -1,0 +1,232 @@
+#include "storage/study/perception_model_file.hpp"
+
+#include <cmath>
+
+#include "storage/export/json_writer.hpp"
+#include "storage/json_reader.hpp"
+#include "storage/load_file.hpp"
+
+namespace vimg {
+
+namespace {
+
+void likelihoods(JsonWriter& w, const ModelLikelihoods& l) {
+  w.begin_object();
+  if (!l.participant.empty()) {
+    w.key("participant");
+    w.string(l.participant);
+  }
+  w.key("trials");
+  w.number(l.trials);
+  w.key("fitted");
+  w.number(l.fitted);
+  w.key("default");
+  w.number(l.defaults);
+  w.key("chance");
+  w.number(l.chance);
+  w.end_object();
+}
+
+void strings(JsonWriter& w, const std::vector<std::string>& texts) {
+  w.begin_array();
+  for (const std::string& t : texts) w.string(t);
+  w.end_array();
+}
+
+class Reader {
+ public:
+  explicit Reader(const std::string& file_name) : list_(file_name) {}
+
+  bool fail(int line, const std::string& message) {
+    list_.error(line, message);
+    return false;
+  }
+
+  bool expect(const JsonValue& v, JsonValue::Kind kind, const std::string& what) {
+    if (v.kind == kind) return true;
+    return fail(v.line, what + " must be " + std::string(json_kind_name(kind)) + ", not " + std::string(json_kind_name(v.kind)));
+  }
+
+  const JsonValue* member(const JsonValue& object, std::string_view key, const std::string& where) {
+    const JsonValue* v = object.find(key);
+    if (!v) fail(object.line, where + " has no \"" + std::string(key) + "\" key");
+    return v;
+  }
+
+  bool header(const JsonValue& root) {
+    if (!expect(root, JsonValue::Kind::object, "a perception model")) return false;
+    const JsonValue* format = member(root, "format", "the file");
+    if (!format || !expect(*format, JsonValue::Kind::string, "\"format\"")) return false;
+    if (format->text != kPerceptionModelFormat)
+      return fail(format->line, "\"format\" is \"" + escape_input(format->text) + "\", not \"" +
+                                    std::string(kPerceptionModelFormat) + "\": not a perception model of vimg study fit");
+    const JsonValue* version = member(root, "version", "the file");
+    if (!version || !expect(*version, JsonValue::Kind::number, "\"version\"")) return false;
+    if (!(version->number >= 1.0) || version->number != std::floor(version->number))
+      return fail(version->line, "\"version\" must be a whole number from 1");
+    if (version->number > kPerceptionModelVersion) {
+      char text[48];
+      std::snprintf(text, sizeof text, "%.0f", version->number);
+      return fail(version->line, "the model is of version " + std::string(text) + ", a newer version than this vimg reads (" +
+                                     std::to_string(kPerceptionModelVersion) + "); use a newer vimg");
+    }
+    return true;
+  }
+
+  bool number(const JsonValue& v, const std::string& what, double low, bool low_open, double high, double& out) {
+    if (!expect(v, JsonValue::Kind::number, what)) return false;
+    const double x = v.number;
+    const bool above = low_open ? x > low : x >= low;
+    if (!(above && x <= high))
+      return fail(v.line, what + " must be " + (low_open ? "> " : ">= ") + trimmed(low) +
+                              (std::isinf(high) ? std::string() : " and <= " + trimmed(high)));
+    out = x;
+    return true;
+  }
+
+  bool constants(const JsonValue& root, DiscriminationConstants& out) {
+    const JsonValue* c = member(root, "constants", "the file");
+    if (!c || !expect(*c, JsonValue::Kind::object, "\"constants\"")) return false;
+    for (std::size_t k = 0; k < c->keys.size(); ++k) {
+      const std::string& key = c->keys[k];
+      if (key != "temperature_jnd" && key != "lapse_rate" && key != "cue_weight")
+        return fail(c->items[k].line, "unknown constant \"" + escape_input(key) +
+                                          "\" (the constants are temperature_jnd, lapse_rate and cue_weight)");
+    }
+    const double inf = INFINITY;
+    const JsonValue* t = member(*c, "temperature_jnd", "\"constants\"");
+    if (!t || !number(*t, "\"temperature_jnd\"", 0.0, true, inf, out.temperature_jnd)) return false;
+    const JsonValue* lapse = member(*c, "lapse_rate", "\"constants\"");
+    if (!lapse || !number(*lapse, "\"lapse_rate\"", 0.0, false, 1.0, out.lapse_rate)) return false;
+    const JsonValue* w = member(*c, "cue_weight", "\"constants\"");
+    if (!w || !expect(*w, JsonValue::Kind::object, "\"cue_weight\"")) return false;
+    std::string names;
+    for (std::size_t cue = 0; cue < kCueCount; ++cue) names += (cue ? ", " : "") + std::string(cue_name(cue));
+    for (std::size_t k = 0; k < w->keys.size(); ++k) {
+      bool known = false;
+      for (std::size_t cue = 0; cue < kCueCount; ++cue) known = known || w->keys[k] == cue_name(cue);
+      if (!known) return fail(w->items[k].line, "unknown cue \"" + escape_input(w->keys[k]) + "\" (the cues are " + names + ")");
+    }
+    for (std::size_t cue = 0; cue < kCueCount; ++cue) {
+      const std::string name(cue_name(cue));
+      const JsonValue* v = member(*w, name, "\"cue_weight\"");
+      if (!v || !number(*v, "the weight of cue \"" + name + "\"", 0.0, false, inf, out.cue_weight[cue])) return false;
+    }
+    return true;
+  }
+
+  bool fitted_on(const JsonValue& root, PerceptionModel& out) {
+    const JsonValue* f = root.find("fitted_on");
+    if (!f) return true;
+    if (!expect(*f, JsonValue::Kind::object, "\"fitted_on\"")) return false;
+    const JsonValue* study = f->find("study");
+    if (!study) return true;
+    if (!expect(*study, JsonValue::Kind::string, "\"study\" of \"fitted_on\"")) return false;
+    out.study = study->text;
+    return true;
+  }
+
+  std::vector<Diagnostic> take() { return list_.take(); }
+
+ private:
+  static std::string trimmed(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+  }
+  DiagnosticList list_;
+};
+
+}  // namespace
+
+std::string perception_model_json(const PerceptionModel& m) {
+  JsonWriter w;
+  w.begin_object();
+  w.key("format");
+  w.string(kPerceptionModelFormat);
+  w.key("version");
+  w.integer(kPerceptionModelVersion);
+  w.key("constants");
+  w.begin_object();
+  w.key("temperature_jnd");
+  w.number(m.constants.temperature_jnd);
+  w.key("lapse_rate");
+  w.number(m.constants.lapse_rate);
+  w.key("cue_weight");
+  w.begin_object();
+  for (std::size_t cue = 0; cue < kCueCount; ++cue) {
+    w.key(cue_name(cue));
+    w.number(m.constants.cue_weight[cue]);
+  }
+  w.end_object();
+  w.end_object();
+  w.key("fitted");
+  strings(w, m.fitted);
+  w.key("intervals");
+  w.begin_object();
+  w.key("confidence");
+  w.number(m.interval_confidence);
+  w.key("method");
+  w.string("profile likelihood");
+  w.key("bounds");
+  w.begin_object();
+  for (const ModelInterval& i : m.intervals) {
+    w.key(i.constant);
+    w.begin_array();
+    w.number(i.lower);
+    w.number(i.upper);
+    w.end_array();
+  }
+  w.end_object();
+  w.end_object();
+  w.key("fitted_on");
+  w.begin_object();
+  w.key("study");
+  w.string(m.study);
+  w.key("actuator");
+  w.string(m.actuator);
+  w.key("trial_files");
+  strings(w, m.trial_files);
+  w.key("participants");
+  w.integer(static_cast<long long>(m.participants));
+  w.key("trials");
+  w.number(m.in_sample.trials);
+  w.key("log_likelihood");
+  likelihoods(w, m.in_sample);
+  w.end_object();
+  w.key("leave_one_participant_out");
+  w.begin_object();
+  w.key("participants");
+  w.begin_array();
+  for (const ModelLikelihoods& l : m.held_out) likelihoods(w, l);
+  w.end_array();
+  w.key("total");
+  likelihoods(w, m.held_out_total);
+  w.end_object();
+  w.key("warnings");
+  strings(w, m.warnings);
+  w.end_object();
+  return w.take();
+}
+
+PerceptionModelLoadResult parse_perception_model(std::string_view json, const std::string& file_name) {
+  PerceptionModelLoadResult result;
+  JsonParseResult parsed = parse_json(json, file_name);
+  if (!parsed.value) {
+    result.diagnostics = std::move(parsed.diagnostics);
+    return result;
+  }
+  Reader read(file_name);
+  PerceptionModel model;
+  const JsonValue& root = *parsed.value;
+  const bool ok = read.header(root) && read.constants(root, model.constants) && read.fitted_on(root, model);
+  result.diagnostics = read.take();
+  if (ok) result.model = std::move(model);
+  return result;
+}
+
+PerceptionModelLoadResult load_perception_model(const std::filesystem::path& file) {
+  return load_file<PerceptionModelLoadResult>(file, kMaxPerceptionModelBytes, parse_perception_model);
+}
+
+}  // namespace vimg

@@ -1,0 +1,78 @@
+#pragma once
+// MODEL.json: the constants of the discrimination model that `vimg study fit` wrote and
+// `vimg compare --model` reads (docs/format.md "Perception model file"). Versioned JSON:
+//
+//   {
+//     "format": "vimg-perception-model",
+//     "version": 1,
+//     "constants": {"temperature_jnd": 0.91, "lapse_rate": 0.04,
+//                   "cue_weight": {"level": 1.3, "pitch": 0.7, "envelope": 1}},
+//     "fitted": ["lapse_rate", "cue_weight.level", ...],
+//     "intervals": {"confidence": 0.95, "method": "profile likelihood", "bounds": {"lapse_rate": [0.01, 0.08], ...}},
+//     "fitted_on": {"study": "study.xml", "actuator": "ideal", "trial_files": [...], "participants": 4, "trials": 480,
+//                   "log_likelihood": {"fitted": -300.1, "default": -410.2, "chance": -665.4}},
+//     "leave_one_participant_out": {"participants": [{"participant": "P1", "trials": 120, "fitted": ..., "default": ...,
+//                                   "chance": ...}, ...], "total": {"trials": 480, "fitted": ..., "default": ..., "chance": ...}},
+//     "warnings": ["cue_weight.pitch: ..."]
+//   }
+//
+// The reader needs `format`, `version` and `constants` (every constant, every cue by name, nothing
+// else in it) and reads `fitted_on.study` when there; the other keys are the fit's record and are
+// not read. A file of a later version is refused (this reader knows version 1 only). Strict JSON
+// (storage/json_reader.hpp), at most kMaxPerceptionModelBytes; every problem is `FILE:LINE: error`.
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "primitives/perception/discrimination_choice.hpp"
+#include "storage/diagnostic.hpp"
+#include "storage/limits.hpp"
+
+namespace vimg {
+
+inline constexpr std::string_view kPerceptionModelFormat = "vimg-perception-model";
+inline constexpr int kPerceptionModelVersion = 1;
+inline constexpr std::size_t kMaxPerceptionModelBytes = 1 * kMiB;
+
+struct ModelInterval {
+  std::string constant;  // "lapse_rate", "cue_weight.level"
+  double lower = 0.0, upper = 0.0;
+};
+
+struct ModelLikelihoods {
+  std::string participant;  // empty for the total
+  double trials = 0.0;
+  double fitted = 0.0, defaults = 0.0, chance = 0.0;  // ln-likelihoods
+};
+
+struct PerceptionModel {
+  DiscriminationConstants constants;
+  // The fit's record (written; of it the reader fills `study` only).
+  std::vector<std::string> fitted;
+  double interval_confidence = 0.95;
+  std::vector<ModelInterval> intervals;
+  std::string study;
+  std::string actuator;
+  std::vector<std::string> trial_files;
+  std::size_t participants = 0;
+  ModelLikelihoods in_sample;
+  std::vector<ModelLikelihoods> held_out;
+  ModelLikelihoods held_out_total;
+  std::vector<std::string> warnings;
+};
+
+// The file's text (two-space indented, numbers that read back to the same double).
+std::string perception_model_json(const PerceptionModel& model);
+
+struct PerceptionModelLoadResult {
+  std::optional<PerceptionModel> model;  // set when there is no error
+  std::vector<Diagnostic> diagnostics;
+};
+
+PerceptionModelLoadResult parse_perception_model(std::string_view json, const std::string& file_name);
+PerceptionModelLoadResult load_perception_model(const std::filesystem::path& file);
+
+}  // namespace vimg
