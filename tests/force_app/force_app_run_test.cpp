@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -16,6 +18,7 @@
 #include <thread>
 
 #include "storage/number_text.hpp"
+#include "tests/child_process.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
 namespace vimg {
@@ -47,37 +50,26 @@ ProgramRun run(const fs::path& program, const std::vector<std::string>& args, co
   const fs::path capture = dir.parent_path() / (dir.filename().string() + "_capture");
   fs::create_directories(capture);
   const std::string out_file = (capture / "stdout").string(), err_file = (capture / "stderr").string();
-  std::vector<std::string> argv_text{program.string()};
-  argv_text.insert(argv_text.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : argv_text) argv.push_back(a.data());
-  argv.push_back(nullptr);
+  test::ChildSpec spec;
+  spec.argv = {program.string()};
+  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
+  spec.dir = dir;
+  spec.stdout_file = out_file;
+  spec.stderr_file = err_file;
   const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    sigset_t none;
-    sigemptyset(&none);
-    sigprocmask(SIG_SETMASK, &none, nullptr);
-    if (::chdir(dir.c_str()) != 0) _exit(126);
-    const int out = ::open(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(out, 1);
-    ::dup2(err, 2);
-    ::execv(argv[0], argv.data());
-    _exit(127);
-  }
+  const pid_t pid = test::spawn_child(spec);
   ProgramRun r;
-  if (pid < 0) return r;
+  EXPECT_GT(pid, 0) << "fork failed: " << std::strerror(errno);
+  if (pid <= 0) return r;
   if (signal_number != 0) {
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (ready && !ready() && std::chrono::steady_clock::now() < give_up) {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     r.signalled_when_ready = !ready || ready();
-    ::kill(pid, signal_number);
+    test::signal_child(pid, signal_number);
   }
-  int status = 0;
-  ::waitpid(pid, &status, 0);
+  const int status = test::reap_child(pid);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   r.out = read_text(out_file);

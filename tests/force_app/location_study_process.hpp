@@ -6,7 +6,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +18,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "tests/child_process.hpp"
 
 namespace vimg::location_study_test {
 
@@ -45,26 +51,15 @@ inline Child spawn(const std::vector<std::string>& args, const fs::path& dir, co
   Child c;
   c.out = dir / (capture_name + ".stdout");
   c.err = dir / (capture_name + ".stderr");
-  std::vector<std::string> argv_text{kForce.string()};
-  argv_text.insert(argv_text.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : argv_text) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  c.pid = ::fork();
-  if (c.pid == 0) {
-    sigset_t none;
-    sigemptyset(&none);
-    sigprocmask(SIG_SETMASK, &none, nullptr);
-    if (::chdir(dir.c_str()) != 0) _exit(126);
-    const int in = ::open("/dev/null", O_RDONLY);
-    const int out = ::open(c.out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = ::open(c.err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(in, 0);
-    ::dup2(out, 1);
-    ::dup2(err, 2);
-    ::execv(argv[0], argv.data());
-    _exit(127);
-  }
+  test::ChildSpec spec;
+  spec.argv = {kForce.string()};
+  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
+  spec.dir = dir;
+  spec.stdin_null = true;
+  spec.stdout_file = c.out;
+  spec.stderr_file = c.err;
+  c.pid = test::spawn_child(spec);
+  EXPECT_GT(c.pid, 0) << "fork failed: " << std::strerror(errno);
   return c;
 }
 
@@ -80,9 +75,8 @@ inline Exit wait_for(const Child& c, std::chrono::steady_clock::time_point start
   }
   if (ended == c.pid) {
     e.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  } else if (ended == 0) {
-    ::kill(c.pid, SIGKILL);
-    ::waitpid(c.pid, &status, 0);
+  } else if (ended == 0 && test::signal_child(c.pid, SIGKILL)) {
+    test::reap_child(c.pid);
     e.code = -2;
   }
   e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -107,7 +101,7 @@ inline std::size_t complete_rows(const fs::path& csv) {
 // or a minute passed.
 inline bool wait_for_rows(const Child& c, const fs::path& csv, std::size_t rows) {
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (std::chrono::steady_clock::now() < give_up) {
+  while (c.pid > 0 && std::chrono::steady_clock::now() < give_up) {
     if (complete_rows(csv) >= rows) return true;
     siginfo_t info{};
     if (::waitid(P_PID, static_cast<id_t>(c.pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == c.pid) {

@@ -174,7 +174,7 @@ TEST_F(LocationStudyRun, SigkillLosesAtMostTheTrialUnderWayAndARerunContinues) {
   const fs::path marks = marks_file("quick.csv", 14, 0.3, 0.3);
   const Child first = spawn(study_args("P02", marks), root_, "first");
   ASSERT_TRUE(wait_for_rows(first, csv("P02"), 4)) << read_text(first.err);
-  ::kill(first.pid, SIGKILL);
+  ASSERT_TRUE(test::signal_child(first.pid, SIGKILL));
   const Exit killed = wait_for(first);
   ASSERT_EQ(killed.code, 128 + SIGKILL) << killed.err;
   const std::string before = read_text(csv("P02"));
@@ -214,7 +214,7 @@ TEST_F(LocationStudyRun, SigtermAndSigintStopBetweenMarksWithTheFileIntact) {
   const Child term = spawn(study_args("P03", marks), root_, "term");
   ASSERT_TRUE(wait_for_rows(term, csv("P03"), 2)) << read_text(term.err);
   const auto signalled = std::chrono::steady_clock::now();
-  ::kill(term.pid, SIGTERM);
+  ASSERT_TRUE(test::signal_child(term.pid, SIGTERM));
   const Exit termed = wait_for(term, signalled);
   EXPECT_EQ(termed.code, 143) << termed.err;
   // Handled, not merely killed: the loop was stopped (zero force) and the program says where it stands.
@@ -236,7 +236,7 @@ TEST_F(LocationStudyRun, SigtermAndSigintStopBetweenMarksWithTheFileIntact) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   const bool in_trial_3 = read_text(interrupt.err).find("\ntrial 3 of 14  ") != std::string::npos;
-  ::kill(interrupt.pid, in_trial_3 ? SIGINT : SIGKILL);
+  ASSERT_TRUE(test::signal_child(interrupt.pid, in_trial_3 ? SIGINT : SIGKILL));
   ASSERT_TRUE(in_trial_3) << "trial 3 never started: " << read_text(interrupt.err);
   const Exit interrupted = wait_for(interrupt);
   EXPECT_EQ(interrupted.code, 130) << interrupted.err;

@@ -64,11 +64,16 @@ Outcome convert_and_signal(const fs::path& dir, int signal_number, const std::st
   const int watch_fd = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
   EXPECT_GE(watch_fd, 0);
   inotify_add_watch(watch_fd, dir.c_str(), IN_CREATE);
+  const std::string in = (dir / "in.vimg").string(), out = (dir / out_name).string();  // made before the fork
   const pid_t pid = fork();
   if (pid == 0) {
-    const std::string in = (dir / "in.vimg").string(), out = (dir / out_name).string();
     execl(kVimg.c_str(), "vimg", "convert", in.c_str(), out.c_str(), static_cast<char*>(nullptr));
     _exit(127);
+  }
+  EXPECT_GT(pid, 0) << "fork failed";
+  if (pid < 0) {  // never signalled: kill(-1, ...) would reach every process of the user
+    close(watch_fd);
+    return outcome;
   }
   if (when == SignalWhen::threads_work) {
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);

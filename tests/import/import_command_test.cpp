@@ -114,6 +114,10 @@ int import_and_signal_once_read(const std::filesystem::path& input, const std::f
             "--levels", "16", static_cast<char*>(nullptr));
     _exit(127);
   }
+  if (pid < 0) {  // never signalled: kill(-1, ...) would reach every process of the user
+    ::close(watch);
+    return -1;
+  }
   pollfd p{watch, POLLIN, 0};
   if (::poll(&p, 1, 60000) > 0) ::kill(pid, signal_number);
   ::close(watch);

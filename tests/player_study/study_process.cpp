@@ -7,10 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <thread>
+
+#include "tests/child_process.hpp"
 
 namespace vimg::study_test {
 
@@ -25,36 +29,22 @@ const std::vector<std::pair<std::string, std::vector<std::string>>> kSets{
 Player::Player(const std::vector<std::string>& args, const fs::path& capture)
     : out_(capture / "stdout"), err_(capture / "stderr") {
   fs::create_directories(capture);
-  std::vector<std::string> argv_text{kPlayer.string()};
-  argv_text.insert(argv_text.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : argv_text) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_ = ::fork();
-  if (pid_ == 0) {
-    sigset_t none;
-    sigemptyset(&none);
-    sigprocmask(SIG_SETMASK, &none, nullptr);
-    ::setenv("SDL_VIDEODRIVER", "dummy", 1);
-    ::setenv("SDL_AUDIODRIVER", "dummy", 1);
-    const int out = ::open(out_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = ::open(err_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(out, 1);
-    ::dup2(err, 2);
-    ::execv(argv[0], argv.data());
-    _exit(127);
-  }
+  test::ChildSpec spec;
+  spec.argv = {kPlayer.string()};
+  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
+  spec.env = {{"SDL_VIDEODRIVER", "dummy"}, {"SDL_AUDIODRIVER", "dummy"}};
+  spec.stdout_file = out_;
+  spec.stderr_file = err_;
+  pid_ = test::spawn_child(spec);
+  EXPECT_GT(pid_, 0) << "fork failed: " << std::strerror(errno);
 }
 
 Player::~Player() {
-  if (pid_ > 0) {
-    ::kill(pid_, SIGKILL);
-    ::waitpid(pid_, nullptr, 0);
-  }
+  if (test::signal_child(pid_, SIGKILL)) test::reap_child(pid_);
 }
 
 void Player::signal(int number) const {
-  if (pid_ > 0) ::kill(pid_, number);
+  test::signal_child(pid_, number);
 }
 
 Finished Player::wait() {

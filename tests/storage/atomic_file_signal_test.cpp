@@ -37,6 +37,12 @@ int status_of_child_signalled(const fs::path& dir, int writers, int signal_numbe
   int ready[2];
   if (::pipe(ready) != 0) return -1;
   const pid_t pid = ::fork();
+  if (pid < 0) {  // never signalled: kill(-1, ...) would reach every process of the user
+    ADD_FAILURE() << "fork failed";
+    ::close(ready[0]);
+    ::close(ready[1]);
+    return -1;
+  }
   if (pid == 0) {
     ::close(ready[0]);
     exit_on_interrupt_removing_temporaries();

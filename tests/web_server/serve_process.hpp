@@ -9,24 +9,29 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <gtest/gtest.h>
+
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "tests/child_process.hpp"
 #include "tests/web_server/raw_http.hpp"
+#include "web/site_builder/web_site.hpp"
 
 namespace vimg::test {
 
 inline const std::string kVimg = VIMG_BINARY_DIR "/cli/vimg";
 
-// index.html, vimg.js, vimg.wasm, worklet.js and the study pages: stand-ins in `dir`.
+// The page's files and the study pages (web/site_builder/web_site.hpp names them): stand-ins in `dir`.
 inline void write_stand_in_assets(const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
-  for (const char* name : {"index.html", "vimg.js", "vimg.wasm", "worklet.js", "study.html", "study.js", "picture.js", "dashboard.html"}) {
-    std::ofstream(dir / name) << "stand-in " << name << "\n";
-  }
+  for (const char* name : kWebAssetFiles) std::ofstream(dir / name) << "stand-in " << name << "\n";
+  for (const char* name : kStudyAssetFiles) std::ofstream(dir / name) << "stand-in " << name << "\n";
 }
 
 // The child process itself: `vimg serve ARGS... --port 0` with VIMG_WEB_ASSETS=assets and
@@ -37,44 +42,37 @@ class ServeChild {
  public:
   ServeChild(const std::vector<std::string>& args, const std::filesystem::path& assets, const std::filesystem::path& tmp,
              int stdout_fd, int stderr_fd = -1) {
-    pid_ = fork();
-    if (pid_ == 0) {
-      if (stdout_fd >= 0) dup2(stdout_fd, STDOUT_FILENO);
-      if (stderr_fd >= 0) dup2(stderr_fd, STDERR_FILENO);
-      setenv("VIMG_WEB_ASSETS", assets.c_str(), 1);
-      setenv("TMPDIR", tmp.c_str(), 1);
-      std::vector<std::string> all{kVimg, "serve"};
-      all.insert(all.end(), args.begin(), args.end());
-      all.insert(all.end(), {"--port", "0"});
-      std::vector<char*> argv;
-      for (std::string& a : all) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      execv(kVimg.c_str(), argv.data());
-      _exit(127);
-    }
+    ChildSpec spec;
+    spec.argv = {kVimg, "serve"};
+    spec.argv.insert(spec.argv.end(), args.begin(), args.end());
+    spec.argv.insert(spec.argv.end(), {"--port", "0"});
+    spec.env = {{"VIMG_WEB_ASSETS", assets.string()}, {"TMPDIR", tmp.string()}};
+    spec.stdout_fd = stdout_fd;
+    spec.stderr_fd = stderr_fd;
+    pid_ = spawn_child(spec);
+    EXPECT_GT(pid_, 0) << "fork failed: " << std::strerror(errno);
   }
   ~ServeChild() {
-    if (pid_ > 0 && !reaped_) {
-      kill(pid_, SIGKILL);
-      waitpid(pid_, nullptr, 0);
-    }
+    if (!reaped_ && signal_child(pid_, SIGKILL)) reap_child(pid_);
   }
   ServeChild(const ServeChild&) = delete;
   ServeChild& operator=(const ServeChild&) = delete;
 
-  // Whether the child has ended (it stays unreaped, for stop_with() or the destructor).
+  // Whether the child has ended (it stays unreaped, for stop_with() or the destructor); a child
+  // that was never started has.
   bool ended() const {
+    if (pid_ <= 0) return true;
     siginfo_t info{};
     return waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid_;
   }
 
-  // Sends the signal and returns the exit status (-1 if a signal killed it).
+  // Sends the signal and returns the exit status (-1 if a signal killed it, or it never started).
   int stop_with(int signal_number) {
-    kill(pid_, signal_number);
-    int status = 0;
-    waitpid(pid_, &status, 0);
+    if (pid_ <= 0 || reaped_) return -1;
+    signal_child(pid_, signal_number);
+    const int status = reap_child(pid_);
     reaped_ = true;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return status >= 0 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
 
  private:
