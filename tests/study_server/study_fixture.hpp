@@ -31,6 +31,13 @@ inline std::string read_text(const std::filesystem::path& path) {
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
+// A well-formed answer (with "&path_mm=12.5") made `bytes` long by writing path_mm with trailing zeros.
+inline std::string answer_of_size(const std::string& answer, std::size_t bytes) {
+  const std::string path_field = "&path_mm=12.5";
+  const std::size_t at = answer.find(path_field) + path_field.size();
+  return answer.substr(0, at) + std::string(bytes - answer.size(), '0') + answer.substr(at);
+}
+
 class StudyServer : public ::testing::Test {
  protected:
   void SetUp() override {

@@ -123,7 +123,7 @@ namespace vimg::test {
 namespace {
 
 // --tls: HTTPS with the given certificate (a self-signed one made here with the openssl command),
-// the study API behind it as over HTTP; plain HTTP on that port gets no answer; a certificate that
+// the study API behind it as over HTTP (an answer from https://HOST recorded, from another site refused); plain HTTP on that port gets no answer; a certificate that
 // cannot be read stops the server with exit 1.
 TEST_F(StudyServer, TlsServesTheStudyOverHttps) {
   const std::string cert = (dir_ / "cert.pem").string(), key = (dir_ / "key.pem").string();
@@ -141,6 +141,16 @@ TEST_F(StudyServer, TlsServesTheStudyOverHttps) {
   const CommandRun wrong = run_command("curl -sk --max-time 30 -o /dev/null -w '%{http_code}' '" + url +
                                        "/api/state?participant=p1'");
   EXPECT_EQ(wrong.out, "403");
+  // The page's answer carries Origin https://HOST (curl sends Host 127.0.0.1:PORT); another site's is refused.
+  const auto answer_status = [&](const std::string& origin) {
+    return run_command("curl -sk --max-time 30 -o /dev/null -w '%{http_code}' -H 'X-Vimg-Key: " + participant_key("p1") +
+                       "' -H 'Origin: " + origin + "' --data '" + good_answer("p1", 1) + "' '" + url + "/api/answer'")
+        .out;
+  };
+  EXPECT_EQ(answer_status("https://evil.example"), "403");
+  EXPECT_FALSE(std::filesystem::exists(trial_file("p1")));
+  EXPECT_EQ(answer_status(url), "200");
+  EXPECT_EQ(read_matching_trials(trial_file("p1")).rows.size(), 1u);
   EXPECT_EQ(exchange(port, "GET", "/study.html").status, 0);  // plain HTTP: no HTTP answer
   EXPECT_EQ(run_command(kVimg + " serve --study '" + kExampleStudy.string() + "' --results '" + results().string() +
                         "' --port 0 --tls '" + (dir_ / "none.pem").string() + "' '" + key + "'").exit_code, 1);

@@ -17,25 +17,68 @@ bool RateBucket::take(double now_s) {
 
 std::size_t ParticipantEntry::completed() const { return log ? log->completed() : 0; }
 
-void ParticipantLogs::open(const std::string& participant, ParticipantEntry& entry) const {
+namespace {
+
+std::filesystem::path trial_file(const std::filesystem::path& dir, const std::string& participant) {
+  return dir / (participant + ".trials.csv");
+}
+
+bool something_at(const std::filesystem::path& file) {
+  std::error_code ec;
+  return std::filesystem::symlink_status(file, ec).type() != std::filesystem::file_type::not_found;
+}
+
+std::string joined(const std::vector<Diagnostic>& diagnostics) {
+  std::string text;
+  for (const Diagnostic& d : diagnostics) {
+    if (!text.empty()) text += "\n";
+    text += d.to_string();
+  }
+  return text;
+}
+
+}  // namespace
+
+std::variant<TrialLog, std::vector<Diagnostic>> ParticipantLogs::open_log(const std::string& participant) const {
   TrialLogOptions options;
   options.total_trials = total_;
-  auto opened = TrialLog::open(dir_, participant, "trials", kMatchingTrialHeader, options);
+  return TrialLog::open(dir_, participant, "trials", kMatchingTrialHeader, options);
+}
+
+void ParticipantLogs::open(const std::string& participant, ParticipantEntry& entry) const {
+  const std::filesystem::path file = trial_file(dir_, participant);
+  if (!exists(file)) return;  // made by the first accepted trial (append)
+  auto opened = open_log(participant);
   if (auto* log = std::get_if<TrialLog>(&opened)) {
     entry.log = std::move(*log);
     return;
   }
   // Refused: a finished participant, or a file that is broken or held by another program.
-  const std::filesystem::path file = dir_ / (participant + ".trials.csv");
   const auto table = read_matching_trials(file);
   if (table.ok() && table.rows.size() == total_) {
     entry.finished = true;
     return;
   }
-  for (const Diagnostic& d : std::get<std::vector<Diagnostic>>(opened)) {
-    if (!entry.error.empty()) entry.error += "\n";
-    entry.error += d.to_string();
+  entry.error = joined(std::get<std::vector<Diagnostic>>(opened));
+}
+
+std::optional<std::string> ParticipantLogs::append(const std::string& participant, ParticipantEntry& entry,
+                                                   const std::vector<std::string>& cells) const {
+  const bool made_here = !entry.log && !something_at(trial_file(dir_, participant));
+  if (!entry.log) {
+    auto opened = open_log(participant);
+    if (auto* problems = std::get_if<std::vector<Diagnostic>>(&opened)) return joined(*problems);
+    entry.log = std::move(std::get<TrialLog>(opened));
   }
+  const auto error = entry.log->append(cells);
+  if (error && made_here && entry.log->completed() == 0) {
+    // The file this request made holds only its header: it goes again, as if never made.
+    const std::filesystem::path file = entry.log->path();
+    entry.log.reset();
+    std::error_code ec;
+    std::filesystem::remove(file, ec);
+  }
+  return error;
 }
 
 void ParticipantLogs::with(const std::string& participant, const std::function<void(ParticipantEntry&)>& use) {

@@ -1,12 +1,14 @@
 #pragma once
 // The trial logs of the participants a study server has seen (web/study_server/study_service.hpp):
-// each participant's DIR/ID.trials.csv opened through the one TrialLog (storage/study/trial_log.hpp)
-// on the first request with that participant's key, and held open (locked against a second writer)
-// until the server stops. One mutex per participant: answers of different participants are written
-// in parallel, answers of one participant one after the other. A finished participant's log cannot
-// be opened (TrialLog refuses it); the file is then read to tell "finished" from a broken file.
-// Each participant also has the bucket that rate-limits their answers (kAnswerBurst at once,
-// kAnswersPerSecond after that).
+// each participant's DIR/ID.trials.csv through the one TrialLog (storage/study/trial_log.hpp). A
+// file that exists is opened on the first request with that participant's key and held open
+// (locked against a second writer) until the server stops; a file that does not exist is made only
+// by the participant's first accepted trial (create()), so that a request that is refused, or only
+// asks for the state, leaves no file behind. One mutex per participant: answers of different
+// participants are written in parallel, answers of one participant one after the other. A finished
+// participant's log cannot be opened (TrialLog refuses it); the file is then read to tell
+// "finished" from a broken file. Each participant also has the bucket that rate-limits their
+// answers (kAnswerBurst at once, kAnswersPerSecond after that).
 // Threads: any; every call locks what it touches.
 #include <cstddef>
 #include <filesystem>
@@ -16,6 +18,8 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "storage/study/trial_log.hpp"
 
@@ -37,7 +41,7 @@ class RateBucket {
 };
 
 struct ParticipantEntry {
-  std::optional<TrialLog> log;  // open unless finished or broken
+  std::optional<TrialLog> log;  // open unless finished, broken or not made yet (no trial accepted)
   bool finished = false;
   std::string error;            // the log could not be opened (it is not finished): why
   RateBucket answers{kAnswerBurst, kAnswersPerSecond};
@@ -51,12 +55,19 @@ class ParticipantLogs {
   // Runs `use` with the participant's entry locked, its log opened first if it is not yet.
   void with(const std::string& participant, const std::function<void(ParticipantEntry&)>& use);
 
+  // Appends the participant's accepted row (called inside with()): the log is made first when the
+  // file does not exist yet, and removed again when that first row cannot be appended, so a
+  // failure leaves no file. The error, or nothing.
+  std::optional<std::string> append(const std::string& participant, ParticipantEntry& entry,
+                                    const std::vector<std::string>& cells) const;
+
  private:
   struct Slot {
     std::mutex mutex;
     ParticipantEntry entry;
   };
   void open(const std::string& participant, ParticipantEntry& entry) const;
+  std::variant<TrialLog, std::vector<Diagnostic>> open_log(const std::string& participant) const;
   std::filesystem::path dir_;
   std::size_t total_;
   std::mutex map_mutex_;

@@ -210,19 +210,17 @@ ApiReply StudyService::answer(const ApiRequest& request) {
       reply = text_reply(400, "bad request: " + check.error);
       return;
     }
-    if (a.device) {
-      if (const auto error = write_device_record_once(dir_, a.participant, *a.device)) {
-        say("vimg serve: " + *error);
-        reply = text_reply(500, "the device record cannot be written; the server's log says why");
-        return;
-      }
-    }
     const MatchingTrial row =
         study::matching_trial_row(study_, stems_, a.participant, *check.result, utc_timestamp_now());
-    if (const auto error = entry.log->append(to_cells(row))) {
+    if (const auto error = logs_.append(a.participant, entry, to_cells(row))) {
       say("vimg serve: " + *error);
       reply = text_reply(500, "the trial cannot be written; the server's log says why");
       return;
+    }
+    // The device record follows the row it describes: a failed append leaves none. The row is
+    // recorded either way; a record that cannot be written is tried again with the next answer.
+    if (a.device) {
+      if (const auto error = write_device_record_once(dir_, a.participant, *a.device)) say("vimg serve: " + *error);
     }
     reply = refusal(200, "", entry.completed(), total_);  // recorded
   });

@@ -13,9 +13,12 @@
 // none) 403; a body that is not a well-formed answer 400; a wrong or missing key, or another
 // participant's, 403; more than the participant's rate allows 429; a finished participant, or a
 // trial that is not the next one, 409 (the reply says how many are done); an image that is not the
-// plan's, or a choice not of the set, 400. Then the device record is written once
-// (DIR/ID.device.json, atomically) and the row appended through TrialLog (one synced line): 200.
-// Nothing is written for any refusal. Any other path under /api/ is 404.
+// plan's, or a choice not of the set, 400. Then the row is appended through TrialLog (one synced
+// line; the participant's first accepted trial makes DIR/ID.trials.csv) and, after it, the device
+// record is written once (DIR/ID.device.json, atomically): 200. A refused request, and GET
+// /api/state, write nothing and make no file. A participant whose trial file exists but cannot be
+// opened (held by vimg-player, say, or broken) gets 503 on the state and the answer. Other methods
+// are 405 (POST only on /api/answer, GET and HEAD elsewhere); any other path under /api/ is 404.
 // Threads: handle() is called from the server's workers at once.
 #include <chrono>
 #include <filesystem>
