@@ -61,27 +61,18 @@ def main():
     colours = ("#1b9e77", "#d95f02", "#7570b3")
     fig, axes = plt.subplots(2, 2, figsize=(11, 8))
 
-    ax = axes[0][0]
-    bands(ax, published, "frequency_weber_fraction", colours)
-    for sl, marker in ((20.0, "o"), (30.0, "s")):
-        pts = sorted((f, v) for f, s, v in model.get("frequency_weber_fraction", []) if s == sl)
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], marker=marker, color="black", label=f"model, {sl:g} dB SL")
-    ax.set_xscale("log")
-    ax.set_xlabel("frequency (Hz)")
-    ax.set_ylabel("frequency JND (Weber fraction)")
-    ax.set_title("Frequency discrimination")
-    ax.legend(fontsize=7)
-
-    ax = axes[0][1]
-    bands(ax, published, "amplitude_jnd_db", colours)
-    for sl, marker in ((20.0, "o"), (30.0, "s")):
-        pts = sorted((f, v) for f, s, v in model.get("amplitude_jnd_db", []) if s == sl)
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], marker=marker, color="black", label=f"model, {sl:g} dB SL")
-    ax.set_xscale("log")
-    ax.set_xlabel("frequency (Hz)")
-    ax.set_ylabel("amplitude JND (dB)")
-    ax.set_title("Amplitude discrimination")
-    ax.legend(fontsize=7)
+    for ax, quantity, ylabel, title in (
+            (axes[0][0], "frequency_weber_fraction", "frequency JND (Weber fraction)", "Frequency discrimination"),
+            (axes[0][1], "amplitude_jnd_db", "amplitude JND (dB)", "Amplitude discrimination")):
+        bands(ax, published, quantity, colours)
+        for sl, marker in ((20.0, "o"), (30.0, "s")):
+            pts = sorted((f, v) for f, s, v in model.get(quantity, []) if s == sl)
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], marker=marker, color="black", label=f"model, {sl:g} dB SL")
+        ax.set_xscale("log")
+        ax.set_xlabel("frequency (Hz)")
+        ax.set_ylabel(ylabel)
+        ax.set_title(title)
+        ax.legend(fontsize=7)
 
     ax = axes[1][0]
     for row in (r for r in published if r["quantity"] == "gap_detection_ms"):

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <mutex>
 
@@ -177,10 +178,21 @@ CompareResult run_compare(const CompareRequest& request) {
     return r;
   }
 
-  r.stsim = stsim_matrix(stsim_features);
-  r.cues = cue_matrix(r.features);
+  // Every pair on every thread (row i: ST-SIM of i against each reference, the cues of i against
+  // the later inputs); the same values as stsim_matrix() and cue_matrix().
+  r.stsim.assign(n, std::vector<double>(n, 1.0));
+  r.cues.assign(n, std::vector<CueDistances>(n, CueDistances{}));
+  run_tasks(n, threads, [&](std::size_t i, int) {
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i) continue;
+      const auto score = stsim_common_length(stsim_features[i], stsim_features[j]);
+      r.stsim[i][j] = score ? score->value : std::numeric_limits<double>::quiet_NaN();
+      if (j > i) r.cues[i][j] = cue_distances(r.features[i], r.features[j]);
+    }
+  });
   r.distance_jnd.assign(n, std::vector<double>(n, 0.0));
   for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < i; ++j) r.cues[i][j] = r.cues[j][i];
     for (std::size_t j = 0; j < n; ++j) r.distance_jnd[i][j] = combined_distance_jnd(r.cues[i][j], request.discrimination);
   }
   r.predicted_confusion = discrimination_confusion(r.cues, request.discrimination);

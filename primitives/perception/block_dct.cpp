@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <numbers>
 
+#include "primitives/perception/radix2_fft.hpp"
+
 namespace vimg::detail {
 
 namespace {
@@ -58,25 +60,7 @@ void orthonormal_dct_512(std::span<const double, kStSimBlockSamples> block,
     re[t.bit_reversed[n]] = block[2 * n];
     re[t.bit_reversed[kN - 1 - n]] = block[2 * n + 1];
   }
-  // Iterative radix-2 decimation-in-time FFT.
-  for (std::size_t size = 2; size <= kN; size *= 2) {
-    const std::size_t half = size / 2;
-    const std::size_t stride = kN / size;
-    for (std::size_t start = 0; start < kN; start += size) {
-      for (std::size_t j = 0; j < half; ++j) {
-        const double wr = t.twiddle_re[j * stride];
-        const double wi = t.twiddle_im[j * stride];
-        const std::size_t a = start + j;
-        const std::size_t b = a + half;
-        const double xr = re[b] * wr - im[b] * wi;
-        const double xi = re[b] * wi + im[b] * wr;
-        re[b] = re[a] - xr;
-        im[b] = im[a] - xi;
-        re[a] += xr;
-        im[a] += xi;
-      }
-    }
-  }
+  radix2_fft(re, im, t.twiddle_re, t.twiddle_im);
   for (std::size_t k = 0; k < kN; ++k) coefficients[k] = re[k] * t.post_re[k] - im[k] * t.post_im[k];
 }
 

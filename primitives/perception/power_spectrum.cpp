@@ -5,6 +5,8 @@
 #include <numbers>
 #include <vector>
 
+#include "primitives/perception/radix2_fft.hpp"
+
 namespace vimg::detail {
 
 namespace {
@@ -50,25 +52,7 @@ void hann_power_spectrum(std::span<const double, kPowerSpectrumFrameSamples> fra
   std::array<double, kN> re{};
   std::array<double, kN> im{};
   for (std::size_t i = 0; i < kN; ++i) re[t.bit_reversed[i]] = frame[i] * t.window[i];
-  // Iterative radix-2 decimation-in-time FFT.
-  for (std::size_t size = 2; size <= kN; size *= 2) {
-    const std::size_t half = size / 2;
-    const std::size_t stride = kN / size;
-    for (std::size_t start = 0; start < kN; start += size) {
-      for (std::size_t j = 0; j < half; ++j) {
-        const double wr = t.twiddle_re[j * stride];
-        const double wi = t.twiddle_im[j * stride];
-        const std::size_t a = start + j;
-        const std::size_t b = a + half;
-        const double xr = re[b] * wr - im[b] * wi;
-        const double xi = re[b] * wi + im[b] * wr;
-        re[b] = re[a] - xr;
-        im[b] = im[a] - xi;
-        re[a] += xr;
-        im[a] += xi;
-      }
-    }
-  }
+  radix2_fft(re, im, t.twiddle_re, t.twiddle_im);
   const double n = static_cast<double>(kN);
   const double scale = 32.0 / (3.0 * n * n);
   for (std::size_t k = 0; k < kPowerSpectrumBins; ++k) {

@@ -73,46 +73,49 @@ void report(const char* quantity, double frequency_hz, double sl_db, double mode
 }
 constexpr double kLevelsDb[] = {20.0, 30.0};
 
+// The model's JND of `quantity` for the differences p(x) falls in the published range; at the
+// range's middle the confusion is 18-40 %; `below` a JND near chance, `far` rarely.
+struct Differences {
+  double search_high = 0.0;  // the JND is sought in [0, search_high]
+  double below = 0.0;        // well below a JND: confused >= 40 %
+  double far = 0.0;          // several JNDs: confused <= 5 %
+};
+
+void expect_published_jnd(const char* quantity, double f, double sl, const std::function<double(double)>& p,
+                          const Differences& x) {
+  const Range r = published(quantity, f);
+  const double model = jnd(p, 0.0, x.search_high);
+  report(quantity, f, sl, model, r);
+  EXPECT_GE(model, r.low) << quantity << ", " << f << " Hz at " << sl << " dB SL";
+  EXPECT_LE(model, r.high) << quantity << ", " << f << " Hz at " << sl << " dB SL";
+  const double at_middle = p(r.middle());
+  EXPECT_GE(at_middle, 0.18) << quantity << ", " << f << " Hz";
+  EXPECT_LE(at_middle, 0.40) << quantity << ", " << f << " Hz";
+  EXPECT_GE(p(x.below), 0.40) << quantity << ", " << f << " Hz, " << x.below << " apart";
+  EXPECT_LE(p(x.far), 0.05) << quantity << ", " << f << " Hz, " << x.far << " apart";
+}
+
 TEST(DiscriminationConformance, FrequencyWeberFractionIsThePublishedOne) {
   for (double f : kFrequenciesHz) {
-    const Range wf = published("frequency_weber_fraction", f);
     for (double sl : kLevelsDb) {
       const DiscriminationFeatures reference = features(Tone{f, sl});
       const auto p = [&](double fraction) { return confusion(reference, Tone{f * (1.0 + fraction), sl}); };
-      const double model = jnd(p, 0.0, 1.0);
-      report("frequency_weber_fraction", f, sl, model, wf);
-      EXPECT_GE(model, wf.low) << f << " Hz at " << sl << " dB SL";
-      EXPECT_LE(model, wf.high) << f << " Hz at " << sl << " dB SL";
-      const double at_middle = p(wf.middle());
-      EXPECT_GE(at_middle, 0.18) << f << " Hz";
-      EXPECT_LE(at_middle, 0.40) << f << " Hz";
-      EXPECT_GE(p(0.05), 0.40) << f << " Hz: 5 % apart";
-      EXPECT_LE(p(1.0), 0.05) << f << " Hz: an octave apart";
+      expect_published_jnd("frequency_weber_fraction", f, sl, p, {1.0, 0.05, 1.0});  // 5 %, an octave
     }
   }
 }
 
 TEST(DiscriminationConformance, AmplitudeJndIsThePublishedOne) {
   for (double f : kFrequenciesHz) {
-    const Range db = published("amplitude_jnd_db", f);
     for (double sl : kLevelsDb) {
       const DiscriminationFeatures reference = features(Tone{f, sl});
       const auto p = [&](double step_db) { return confusion(reference, Tone{f, sl + step_db}); };
-      const double model = jnd(p, 0.0, 10.0);
-      report("amplitude_jnd_db", f, sl, model, db);
-      EXPECT_GE(model, db.low) << f << " Hz at " << sl << " dB SL";
-      EXPECT_LE(model, db.high) << f << " Hz at " << sl << " dB SL";
-      const double at_middle = p(db.middle());
-      EXPECT_GE(at_middle, 0.18) << f << " Hz";
-      EXPECT_LE(at_middle, 0.40) << f << " Hz";
-      EXPECT_GE(p(0.5), 0.40) << f << " Hz: 0.5 dB apart";
-      EXPECT_LE(p(10.0), 0.05) << f << " Hz: 10 dB apart";
+      expect_published_jnd("amplitude_jnd_db", f, sl, p, {10.0, 0.5, 10.0});  // 0.5 dB, 10 dB
     }
   }
 }
 
 TEST(DiscriminationConformance, GapDetectionIsThePublishedOne) {
-  const Range ms = published("gap_detection_ms", 250.0);
   for (double sl : {30.0, 40.0}) {
     const Tone steady{250.0, sl};
     const DiscriminationFeatures reference = features(steady);
@@ -121,15 +124,7 @@ TEST(DiscriminationConformance, GapDetectionIsThePublishedOne) {
       gapped.gap_ms = gap_ms;
       return confusion(reference, gapped);
     };
-    const double model = jnd(p, 0.5, 30.0);
-    report("gap_detection_ms", 250.0, sl, model, ms);
-    EXPECT_GE(model, ms.low) << sl << " dB SL";
-    EXPECT_LE(model, ms.high) << sl << " dB SL";
-    const double at_middle = p(ms.middle());
-    EXPECT_GE(at_middle, 0.18);
-    EXPECT_LE(at_middle, 0.40);
-    EXPECT_GE(p(2.0), 0.40) << "a 2 ms gap";
-    EXPECT_LE(p(30.0), 0.05) << "a 30 ms gap";
+    expect_published_jnd("gap_detection_ms", 250.0, sl, p, {30.0, 2.0, 30.0});  // 2 ms, 30 ms
   }
 }
 
