@@ -10,6 +10,14 @@
 //   part seeds          derive(seed, purpose, index) = mix64(mix64(seed ^ mix64(purpose * G)) + index * G):
 //                       purpose 1 a set's shuffle (index: the set), 2 the metaphors' order, 3 the
 //                       interleaved shuffle, 4 a trial's data seed (index: the trial number, from 1)
+//   matching plan       per set s in file order: the list of images 0..m-1 repeated `repetitions`
+//                       times (the image index runs fastest), trial k of the set is list[order[k]]
+//                       with order = shuffled_indices(list size, derive(participant seed, 1, s))
+//   location plan       blocked: the metaphors (file order) taken in shuffled_indices(count,
+//                       derive(participant seed, 2, 0)), each trials_per_metaphor times in a row;
+//                       interleaved: [metaphor 0 x t, metaphor 1 x t, ...] taken in shuffled_indices(
+//                       size, derive(participant seed, 3, 0)); trial k's data seed derive(.., 4, k)
+// tests/study_core/trial_plan_reference.py is an independent implementation of this definition.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

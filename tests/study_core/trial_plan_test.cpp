@@ -52,7 +52,8 @@ std::string metaphors_of(const std::vector<LocationTrialPlan>& plan) {
 // Pinned: a participant resuming on another build (another compiler, standard library or machine)
 // must get the same order, so every value below was computed outside this code, by an independent
 // implementation of the definition in study/trial_plan.hpp (splitmix64, FNV-1a-64, the rejection
-// draw, Fisher-Yates from the top, derive) in Python integers. The generator is Vigna's splitmix64
+// draw, Fisher-Yates from the top, derive) in Python integers: trial_plan_reference.py beside this
+// file, which checks these pins and ~120 more cases against this code (trial_plan_reference_test.cpp). The generator is Vigna's splitmix64
 // (prng.di.unimi.it/splitmix64.c), whose outputs are standardised: from state 0 its first is
 // 0xE220A8397B1DCDAF, which alone fixes the first swap of shuffled_indices(10, 0) (5 at the end:
 // 2^64 mod 10 = 6 rejects nothing, and 0xE220A8397B1DCDAF mod 10 = 5).
