@@ -7,8 +7,11 @@
 //   file       every trial exactly once, and the trial file equals vimg-player's scripted run of
 //              the same responses and rubbing except for the time columns (rub_s, response_s,
 //              time_utc; path_mm within 1e-3 mm: the browser quantizes pointer positions in CSS px)
+//   file       ... and every row is the plan's presented image and set, with the response chosen
 //   dashboard  the dashboard's report is `vimg study report` of the same file, byte for byte, and
 //              the link its form makes is the one `vimg study link` prints
+//   loading    before the study is loaded, window.vimg.study.state() is {phase: 'loading'}
+//   refused    an answer refused for good (403) is sent once and the page says what to do
 // Waits are on states (a printed URL, a row in the file, a promise), each bounded only against a hang.
 // usage: node run_study_tests.mjs VIMG VIMG_PLAYER|none SOURCE_DIR ARTIFACT_DIR
 import { execFileSync, spawn } from 'node:child_process';
@@ -121,8 +124,19 @@ await check('offline', async () => {
 await check('file', async () => {
   const got = rows();
   assert(got.length === 40 && got.every((r, i) => Number(r.trial) === i + 1), 'the file does not hold trials 1..40 once each');
+  // Every row against the participant's plan (the server's state) and the responses given.
+  const key = new URLSearchParams(link.split('#')[1]).get('key');
+  const state = await (await fetch(`${server.url}api/state?participant=demo`, { headers: { 'X-Vimg-Key': key } })).json();
+  for (let i = 0; i < 40; ++i) {
+    const [set, image] = state.plan[i];
+    const want = { participant: 'demo', set: state.sets[set].name, presented: state.sets[set].images[image], chosen: responses.get(i + 1) };
+    want.correct = want.presented === want.chosen ? '1' : '0';
+    for (const column of Object.keys(want)) {
+      assert(got[i][column] === want[column], `trial ${i + 1} ${column}: file ${got[i][column]}, plan and responses ${want[column]}`);
+    }
+  }
   const expected = await playerRun;
-  if (!expected) return 'vimg-player not built: compared with the plan only';
+  if (!expected) return 'compared with the plan and the responses; vimg-player not built, so not with its scripted run';
   const want = readTrials(expected);
   for (let i = 0; i < 40; ++i) {
     for (const column of ['participant', 'set', 'trial', 'presented', 'chosen', 'correct']) {
@@ -149,6 +163,81 @@ await check('dashboard', async () => {
   const printed = execFileSync(vimg, ['study', 'link', art('results'), '--participant', 'tablet-7'], { encoding: 'utf8' }).trim();
   assert(made === printed, `the dashboard made the link ${made}, vimg study link prints ${printed}`);
   return 'the same HTML as vimg study report; the same link as vimg study link';
+});
+
+// Before the study is loaded (its state request held back), window.vimg.study.state() says so
+// instead of throwing; window.vimg.ready is a promise that resolves once it is loaded.
+await check('loading', async () => {
+  const p = await browser.newPage();
+  p.on('pageerror', (e) => problems.push(`uncaught (loading): ${e.message}`));
+  await p.setRequestInterception(true);
+  let release = null;
+  const held = new Promise((resolve) => { release = resolve; });
+  let requested = null;
+  const stateRequested = new Promise((resolve) => { requested = resolve; });
+  p.on('request', async (request) => {
+    if (request.url().includes('/api/state')) {
+      requested();
+      await held;
+    }
+    request.continue();
+  });
+  const linkOf = execFileSync(vimg, ['study', 'link', art('results'), '--participant', 'loading-1'], { encoding: 'utf8' }).trim();
+  await p.goto(linkOf, { waitUntil: 'load' });
+  await stateRequested;
+  const before = await p.evaluate(async () => ({ state: window.vimg.study.state(), ready: window.vimg.ready instanceof Promise,
+    proceed: await window.vimg.study.proceed().then(() => 'moved on', (e) => e.message) }));
+  assert(JSON.stringify(before.state) === '{"phase":"loading"}', `before loading: ${JSON.stringify(before.state)}`);
+  assert(before.ready, 'window.vimg.ready is not a promise');
+  assert(before.proceed.includes('not loaded yet'), `proceed() before loading: ${before.proceed}`);
+  release();
+  await p.evaluate(() => window.vimg.ready);
+  const after = await p.evaluate(() => window.vimg.study.state());
+  assert(after.phase === 'instructions' && after.trial === 1, `after loading: ${JSON.stringify(after)}`);
+  await p.close();
+  return `${JSON.stringify(before.state)}, then ${after.phase}`;
+});
+
+// An answer the server refuses for good (403: the server was restarted on another results folder,
+// whose secret makes other keys) is sent once, settles as refused and tells the participant what
+// to do; nothing is written.
+await check('refused', async () => {
+  const p = await browser.newPage();
+  p.on('pageerror', (e) => problems.push(`uncaught (refused): ${e.message}`));
+  const linkOf = execFileSync(vimg, ['study', 'link', art('results'), '--participant', 'refused-1'], { encoding: 'utf8' }).trim();
+  await p.goto(linkOf, { waitUntil: 'load' });
+  await p.waitForFunction(() => window.vimg !== undefined && window.vimg.ready !== undefined, { timeout: 60000 });
+  await p.evaluate(() => window.vimg.ready);
+  const state = await toNextTrial(p);
+  await rub(p, gesture);
+  await server.kill('SIGTERM');
+  fs.mkdirSync(art('other-results'), { recursive: true });
+  server = await startStudyServer(vimg, study, art('other-results'), server.port);
+  const posts = [];
+  p.on('request', (r) => { if (r.method() === 'POST' && r.url().endsWith('/api/answer')) posts.push(r.url()); });
+  const settled = p.evaluate((stem) => window.vimg.study.answer(stem).then(() => 'confirmed', (e) => e.message), state.choices[0]);
+  settled.catch(() => {});
+  // Settled: refused, and nothing is being sent or waits to be sent again (a page that retries
+  // never gets there: the bound ends the wait).
+  await p.waitForFunction(() => window.vimg.study.refusal() !== '' && !window.vimg.study.delivering(), { timeout: 30000 })
+    .catch(() => { throw new Error(`the answer never settled as refused (${posts.length} POSTs)`); });
+  const outcome = await settled;
+  assert(outcome.includes('HTTP 403') && outcome.includes('Ask the researcher for a new link'), `the answer settled as: ${outcome}`);
+  assert(posts.length === 1, `${posts.length} POSTs of the refused answer`);
+  assert(await p.evaluate(() => window.vimg.study.unconfirmed()) === 0, 'the refused answer is still kept for sending');
+  const shown = await p.evaluate(() => {
+    const e = document.getElementById('status');
+    const box = e.getBoundingClientRect();
+    return { text: e.textContent, visible: getComputedStyle(e).display !== 'none' && box.height > 0 && box.bottom > 0,
+             problem: e.classList.contains('problem') };
+  });
+  assert(shown.visible && shown.problem && shown.text === outcome, `the page shows: ${JSON.stringify(shown)}`);
+  await p.screenshot({ path: art('refused.png') });
+  for (const dir of ['results', 'other-results']) {
+    assert(!fs.readdirSync(art(dir)).some((name) => name.startsWith('refused-1.')), `a file of refused-1 in ${dir}`);
+  }
+  await p.close();
+  return 'one POST, then: ' + shown.text;
 });
 
 if (problems.length) console.log(`page problems: ${problems.join('; ')}`);

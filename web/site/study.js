@@ -4,6 +4,7 @@
 // in vimg.wasm; this file shows its screens, moves pointer events and samples, and sends each
 // answer to the server, keeping it in localStorage until the server confirms it. The link is
 // study.html#participant=ID&key=KEY; the key goes in the X-Vimg-Key header, never in a URL.
+// window.vimg.ready: a promise that resolves once the study is loaded (rejects when it cannot be);
 // window.vimg.study: state(), proceed(), skipTraining(), answer(stem) (docs/web.md).
 (function () {
   const $ = (id) => document.getElementById(id);
@@ -27,8 +28,15 @@
   const api = { study: {} };
   window.vimg = api;
 
+  let loaded = false;       // the study has started in the flow (window.vimg.ready resolved)
+  let loadError = null;    // why loading failed
+  let refusal = '';        // what to do about an answer the server refused for good
   const now = () => performance.now() / 1000;
-  const status = (text) => { $('status').textContent = text; };
+  // The line above the screens: a refused answer's message stays until the page is reloaded.
+  const status = (text) => {
+    $('status').textContent = refusal || text;
+    $('status').classList.toggle('problem', refusal !== '');
+  };
   const screen = () => kScreens[m._vimg_study_screen()];
   function phase() {
     const s = screen();
@@ -47,10 +55,40 @@
   const pending = () => JSON.parse(localStorage.getItem(pendingKey) || '[]');
   const keepPending = (list) => localStorage.setItem(pendingKey, JSON.stringify(list));
   let delivering = null;
-  const confirmed = new Map();  // trial -> resolvers waiting for its confirmation
+  const confirmed = new Map();  // trial -> [{resolve, reject}] waiting for its confirmation
   const roundTripsMs = [];      // each confirmed answer's last request, sent to confirmed
-  // Sends the kept answers in order until each is confirmed (200, or 409 with the trial recorded);
-  // a lost network or a stopped server is tried again, at most every 2 s.
+  // Worth sending again: a lost network (no reply), too many answers at once (429), a server that
+  // failed or cannot open the trial file now (5xx, 503). Any other refusal (400, 403, 404, 409
+  // without the trial recorded, 413, ...) is for good: sending the same answer again cannot help.
+  const transient = (code) => code === 429 || code >= 500;
+  function refusalMessage(code, reply, why) {
+    const lost = 'Your last answer (trial ' + reply.trial + ') was not saved: ';
+    if (code === 403) return lost + 'the server no longer accepts this link (HTTP 403). Ask the researcher for a new link.';
+    if (code === 409) {
+      return lost + 'the server has ' + reply.completed + ' trials of yours, not the one before this (HTTP 409). ' +
+        'Reload this page to go on from trial ' + (reply.completed + 1) + '.';
+    }
+    return lost + 'the server refused it (HTTP ' + code + (why ? ': ' + why : '') + '). Reload this page; ' +
+      'if this message comes again, tell the researcher.';
+  }
+  // Settles a kept answer: confirmed (null) or refused for good (the message). A refused answer
+  // leaves the list of kept answers for vimg.study.refused.ID, so that it is not lost without a trace.
+  function settle(trial, message) {
+    if (message) {
+      const refusedKey = 'vimg.study.refused.' + participant;
+      const kept = pending().filter((a) => a.trial === trial);
+      localStorage.setItem(refusedKey, JSON.stringify(JSON.parse(localStorage.getItem(refusedKey) || '[]').concat(kept)));
+    }
+    keepPending(pending().filter((a) => a.trial !== trial));
+    for (const waiter of confirmed.get(trial) || []) {
+      if (message) waiter.reject(new Error(message));
+      else waiter.resolve();
+    }
+    confirmed.delete(trial);
+  }
+  // Sends the kept answers in order until each is settled: confirmed (200, or 409 with the trial
+  // recorded) or refused for good (the participant is told what to do). A lost network, a stopped
+  // server, 429 and 5xx are tried again, at once, then at most every 2 s.
   function deliver() {
     if (!delivering) {
       delivering = sendKept().finally(() => {
@@ -65,25 +103,33 @@
     for (let list = pending(); list.length > 0; list = pending()) {
       const first = list[0];
       let done = false;
+      let refused = '';
       const sent_ms = performance.now();
       try {
         const r = await fetch('api/answer', { method: 'POST', cache: 'no-store', body: first.body,
           headers: Object.assign({ 'Content-Type': 'application/x-www-form-urlencoded' }, headers) });
-        const reply = r.status === 200 || r.status === 409 ? await r.json() : null;
-        done = reply !== null && reply.completed >= first.trial;
-        if (!done && r.status !== 429 && r.status < 500 && r.status !== 409) {
-          status('the server refused an answer: HTTP ' + r.status);
+        const text = await r.text();
+        let reply = null;
+        try { reply = JSON.parse(text); } catch (err) { reply = null; }
+        done = (r.status === 200 || r.status === 409) && reply !== null && reply.completed >= first.trial;
+        if (!done && !transient(r.status)) {
+          refused = refusalMessage(r.status, { trial: first.trial, completed: reply ? reply.completed : 0 },
+                                   reply ? reply.error : text.trim().slice(0, 200));
+        } else if (!done) {
+          status('saving… (the server answered HTTP ' + r.status + '; retrying)');
         }
       } catch (err) {
         status('saving… (the server is not reachable; retrying)');
       }
       if (done) {
         roundTripsMs.push(performance.now() - sent_ms);
-        keepPending(pending().filter((a) => a.trial !== first.trial));
-        for (const resolve of confirmed.get(first.trial) || []) resolve();
-        confirmed.delete(first.trial);
+        settle(first.trial, null);
         wait_ms = 100;
         status('');
+      } else if (refused) {
+        refusal = refused;
+        status('');
+        settle(first.trial, refused);
       } else {
         await new Promise((resolve) => setTimeout(resolve, wait_ms));
         wait_ms = Math.min(2000, wait_ms * 2);
@@ -176,7 +222,7 @@
         play(set, presented);
       } else {
         study.sets[set].images.forEach((name, i) => {
-          choices.appendChild(figure(images.get(set + '/' + i).picture, name, thumbScale(set), () => choose(i)));
+          choices.appendChild(figure(images.get(set + '/' + i).picture, name, thumbScale(set), () => choose(i).catch(() => {})));
         });
       }
     } else if (p === 'pause') {
@@ -271,17 +317,24 @@
       '&rub_s=' + m._vimg_study_result_rub_s() + '&response_s=' + m._vimg_study_result_response_s() +
       '&path_mm=' + m._vimg_study_result_path_mm() + deviceFields();
     keepPending(pending().concat([{ trial, body }]));
-    const done = new Promise((resolve) => confirmed.set(trial, (confirmed.get(trial) || []).concat([resolve])));
+    const done = new Promise((resolve, reject) => confirmed.set(trial, (confirmed.get(trial) || []).concat([{ resolve, reject }])));
     deliver();
     render();
     return done;
   }
+  // The calls below need the study loaded: state() says 'loading' (or 'error') until then.
+  const whenLoaded = () => {
+    if (!loaded) throw new Error('the study is not loaded yet (await window.vimg.ready)');
+  };
   api.study.state = () => {
+    if (loadError) return { phase: 'error', error: loadError };
+    if (!loaded) return { phase: 'loading' };
     const set = setIndex();
     return { phase: phase(), set: study.sets[set].name, trial: m._vimg_study_trial(), trials: m._vimg_study_total(),
              choices: study.sets[set].images.slice() };
   };
   api.study.proceed = async () => {
+    whenLoaded();
     const p = phase();
     if (p === 'instructions') {
       consented = true;
@@ -298,11 +351,13 @@
     render();
   };
   api.study.skipTraining = async () => {
+    whenLoaded();
     if (phase() !== 'training') throw new Error('not training');
     m._vimg_study_skip_training(now());
     render();
   };
   api.study.answer = async (stem) => {
+    whenLoaded();
     if (phase() !== 'trial') throw new Error('not in a trial');
     const index = study.sets[setIndex()].images.indexOf(stem);
     if (index < 0) throw new Error(stem + ' is not an image of set ' + study.sets[setIndex()].name);
@@ -315,6 +370,9 @@
     return { x: r.left + x * pxPerMm, y: r.top + y * pxPerMm };
   };
   api.study.unconfirmed = () => pending().length;
+  api.study.delivering = () => delivering !== null;  // answers are being sent (or a retry waits)
+  api.study.refusal = () => refusal;                  // the message of an answer refused for good, or ''
+
   api.study.roundTripsMs = () => roundTripsMs.slice();
   api.audioContext = () => (audio ? audio.context : null);  // for tools: the output's context
 
@@ -382,8 +440,12 @@
       requestAnimationFrame(frame);
     };
     requestAnimationFrame(frame);
+    loaded = true;
     render();
     status(study.completed > 0 && !study.finished ? 'welcome back: the study goes on at trial ' + (study.completed + 1) : '');
   })();
-  api.ready.catch((err) => status('error: ' + err.message));
+  api.ready.catch((err) => {
+    loadError = err.message;
+    status('error: ' + err.message);
+  });
 })();

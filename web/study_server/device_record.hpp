@@ -1,6 +1,7 @@
 #pragma once
 // The device a participant's page runs on, beside the trial file: DIR/ID.device.json, written once
-// (the first answer that carries it; later ones leave it as it is), atomically:
+// (after the first recorded row of an answer that carries it, never before the row; later ones
+// leave it as it is), atomically:
 //   {"participant": ID, "user_agent": ..., "screen_width_mm": ..., "screen_height_mm": ...,
 //    "audio_rate_hz": ..., "output_latency_s": ..., "time_utc": "2026-11-25T16:38:51Z"}
 #include <filesystem>
