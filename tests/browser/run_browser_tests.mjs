@@ -9,6 +9,8 @@
 //                    renderer; in the page's wasm, an approach that stops 6 mm short of a SURFACE is
 //                    felt inside it with 400 ms predicted, and not without prediction
 //   placement        an event queued inside a block takes effect at its own sample, not the block's first
+//   timestamps       pointer events with known timeStamps land on the worklet's clock within one render
+//                    quantum of their true time (audio_clock.js: the output's pairing of the clocks)
 //   push             a save of the image reaches the open page, the audio still running (the time is reported)
 //   refuses          traversal, other methods than GET/HEAD and listings are refused
 //   noErrors         no console error, failed request or exception during all the checks, not only at load
@@ -204,6 +206,75 @@ await check('placement', async () => {
   assert(r.first >= 200, `the output sounded at sample ${r.first}, before the stroke's first event at sample 200`);
   assert(r.first < 200 + 480, `the output first sounded at sample ${r.first}, more than 10 ms after the stroke's start at sample 200`);
   return `silent for ${r.first} samples, the stroke starting at sample 200; peak ${r.peak.toFixed(3)}`;
+});
+
+// web/site/audio_clock.js in the page: pointer events dispatched with known timeStamps (DevTools'
+// input events carry their own time), 20 to 60 ms old when dispatched as a panel's events are, land
+// on the worklet's clock within one render quantum (128 frames) of their true time: the context time
+// heard at their timeStamp by the output's pairings of the clocks (getOutputTimestamp()) read every
+// few ms while the check runs, those within 30 ms of the event. The stamp is that time plus the
+// output latency the page assumes (the horizon adds the same), so the check subtracts it.
+await check('timestamps', async () => {
+  await page.evaluate(() => window.vimg.startAudio());
+  await waitForAudioTime(page, 0.2);
+  await page.evaluate(() => {
+    window.clockReadings = [];
+    window.clockSampler = setInterval(() => window.clockReadings.push(window.vimg.clockReading()), 2);
+  });
+  await waitForAudioTime(page, 0.1);  // pairings read before the oldest event's time
+  const surface = (await page.evaluate(() => window.vimg.imageInfo())).primitives.find((p) => p.kind === 'surface');
+  const [x0, y0, x1, y1] = surface.bbox_mm;
+  const from = await page.evaluate(() => window.vimg.samplesSent);
+  const cdp = await page.createCDPSession();
+  const origin = await page.evaluate(() => performance.timeOrigin);
+  const sent = [];
+  const points = await page.evaluate((a, b, y) => Array.from({ length: 40 }, (_, i) => window.vimg.clientPointOfMm(a + (b - a) * i / 40, y)),
+                                     x0 + 2, x1 - 2, (y0 + y1) / 2);
+  for (let round = 0; round < 8; ++round) {
+    for (let k = 0; k < 5; ++k) {
+      // 60, 50, ... 20 ms old when dispatched (the clock read just before), in order.
+      const now = await page.evaluate(() => performance.now());
+      const timeStamp = Math.max(now - 60 + 10 * k + 3 * Math.random(), (sent.at(-1) ?? 0) + 0.5);
+      const p = points[round * 5 + k];
+      const type = round === 0 && k === 0 ? 'mousePressed' : 'mouseMoved';
+      await cdp.send('Input.dispatchMouseEvent', { type, x: p.x, y: p.y, button: 'left', buttons: 1, clickCount: 1,
+                                                   timestamp: (origin + timeStamp) / 1000 });
+      sent.push(timeStamp);
+    }
+    await waitForAudioTime(page, 0.02);
+  }
+  const last = await page.evaluate((a, b) => window.vimg.clientPointOfMm(a, b), x1 - 2, (y0 + y1) / 2);
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: last.x, y: last.y, button: 'left', buttons: 0, clickCount: 1 });
+  await waitForAudioTime(page, 0.1);
+  const r = await page.evaluate((f) => {
+    clearInterval(window.clockSampler);
+    return { events: window.vimg.events.filter((e) => e.id > f).map((e) => ({ timeStamp: e.timeStamp, stampS: e.stampS })),
+             readings: window.clockReadings, rate: window.vimg.audioSampleRate() };
+  }, from);
+  const events = r.events.slice(0, sent.length);
+  assert(events.length === sent.length && events.every((e) => e.stampS !== undefined),
+         `${events.filter((e) => e.stampS !== undefined).length} of ${sent.length} dispatched events were applied by the worklet`);
+  const skewMs = Math.max(...events.map((e, i) => Math.abs(e.timeStamp - sent[i])));
+  assert(skewMs < 0.5, `the page's timeStamps differ from the dispatched ones by up to ${skewMs} ms`);
+  // The true time of each event: the context time heard at its timeStamp by the pairings the page
+  // read every few ms, within 30 ms of it (their median offset, so one late callback is outvoted).
+  const pairs = r.readings.filter((q) => q.contextTime > 0);
+  assert(pairs.length >= 20, `only ${pairs.length} pairings of the clocks were read`);
+  const latencyS = pairs.at(-1).latencyS;
+  const errorsS = events.map((e) => {
+    // Within 30 ms, else (the audio thread stalled) the three nearest.
+    const byDistance = [...pairs].sort((x, y) => Math.abs(x.performanceTime - e.timeStamp) - Math.abs(y.performanceTime - e.timeStamp));
+    const within = byDistance.filter((q) => Math.abs(q.performanceTime - e.timeStamp) <= 30);
+    const near = (within.length >= 3 ? within : byDistance.slice(0, 3)).map((q) => q.contextTime * 1000 - q.performanceTime)
+      .sort((x, y) => x - y);
+    return e.stampS - latencyS - (e.timeStamp + near[(near.length - 1) >> 1]) / 1000;
+  });
+  const worst = Math.max(...errorsS.map(Math.abs));
+  const quantumS = 128 / r.rate;
+  assert(worst <= quantumS, `an event landed ${(worst * 1000).toFixed(2)} ms from its true time (bound: one render quantum, ` +
+         `${(quantumS * 1000).toFixed(2)} ms); errors ${errorsS.map((v) => (v * 1000).toFixed(2)).join(', ')} ms`);
+  return `${events.length} events, worst ${(worst * 1000).toFixed(3)} ms from their true time (bound ${(quantumS * 1000).toFixed(2)} ms) ` +
+    `over ${pairs.length} pairings read; timeStamps kept within ${skewMs.toFixed(3)} ms`;
 });
 
 await check('push', async () => {

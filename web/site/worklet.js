@@ -3,12 +3,14 @@
 // in a worklet). Messages in: {type:'init', wasm, vsc}, {type:'vsc', bytes},
 // {type:'event', finger, phase, x, y, pressure, id, time}, {type:'prediction', horizonS}.
 // An event's `time` is the pointer sample's own time on the AudioContext's clock (the page maps its
-// timeStamp there); the renderer applies it at its sample (WebRenderer::live_event_at): inside a
+// timeStamp there with the output's pairing of the clocks, audio_clock.js); the renderer applies it at its sample (WebRenderer::live_event_at): inside a
 // block when it falls there, at the next block's first sample when it is already past, stamped with
 // its own time (at most WebRenderer::kOldestLiveEventS old) so the prediction knows its age. Without
 // `time`, an event applies at the next block. The page's horizon adds the output's latency
-// (docs/latency.md). Out: {type:'ready'}, {type:'scope', samples, contacts, eventIds, peak,
-// time, horizonS (the prediction horizon in use)}, {type:'error', text} (once, when rendering throws).
+// (docs/latency.md). Out: {type:'ready'}, {type:'scope', samples, contacts, applied, peak,
+// time, horizonS (the prediction horizon in use)}, {type:'error', text} (once, when rendering throws);
+// `applied` holds [id, time, first affected sample's time] (context clock, s) of each event applied
+// by the blocks since the last report.
 // The site's worklet.js is web/wasm/vimg_api.js followed by this file (web/wasm/CMakeLists.txt), so
 // the worklet calls the wasm through the same VimgRenderer as the page: one copy-in of a .vsc.
 'use strict';
@@ -26,13 +28,13 @@ class VimgProcessor extends AudioWorkletProcessor {
   constructor() {
     super();
     this.exports = null;
-    this.pending = [];           // {id, time}: events queued in the renderer, by live time
+    this.pending = [];           // {id, time, stampS}: events queued in the renderer (live time, context time)
     this.offsetS = null;         // the context's time minus the renderer's live time
     this.scope = new Float32Array(1024);
     this.scopeAt = 0;
     this.peak = 0;
     this.blocks = 0;
-    this.eventIds = [];
+    this.applied = [];           // [id, stampS, firstSampleS] since the last report
     // A message that fails (a wasm that does not instantiate, say) is reported, never swallowed.
     this.port.onmessage = (e) => {
       try {
@@ -82,7 +84,7 @@ class VimgProcessor extends AudioWorkletProcessor {
       const offset = this.offsetS === null ? currentTime - x.vimg_live_time_s() : this.offsetS;
       const t = typeof m.time === 'number' ? m.time - offset : x.vimg_live_time_s();
       x.vimg_live_event_at(t, m.finger, m.phase, m.x, m.y, m.pressure);
-      if (m.id !== undefined) this.pending.push({ id: m.id, time: t });
+      if (m.id !== undefined) this.pending.push({ id: m.id, time: t, stampS: t + offset });
     } else if (m.type === 'prediction' && this.exports) {
       this.exports.vimg_live_set_prediction(m.horizonS);
     }
@@ -103,13 +105,16 @@ class VimgProcessor extends AudioWorkletProcessor {
     const out = outputs[0];
     if (!this.exports || out.length === 0) return true;
     const x = this.exports;
-    this.offsetS = currentTime - x.vimg_live_time_s();
+    const start = x.vimg_live_time_s();
+    this.offsetS = currentTime - start;
     const frames = out[0].length;
     const block = new Float32Array(this.memory.buffer, x.vimg_live_render(frames), frames);  // a byte offset
-    // The events this block applied (their time is before its end) are reported with it.
+    // The events this block applied (their time is before its end) are reported with it, with their
+    // first affected sample: the first at or after their time (the block's first when already past).
     const end = x.vimg_live_time_s();
     if (this.pending.length > 0) {
-      this.pending = this.pending.filter((e) => (e.time < end ? (this.eventIds.push(e.id), false) : true));
+      const first = (t) => this.offsetS + start + Math.max(0, Math.ceil((t - start) * sampleRate - 1e-6)) / sampleRate;
+      this.pending = this.pending.filter((e) => (e.time < end ? (this.applied.push([e.id, e.stampS, first(e.time)]), false) : true));
     }
     for (const channel of out) channel.set(block);
     for (let i = 0; i < frames; ++i) {
@@ -119,11 +124,11 @@ class VimgProcessor extends AudioWorkletProcessor {
     // The peak of every block since the last report, so no block's output goes unseen.
     for (let i = 0; i < frames; ++i) this.peak = Math.max(this.peak, Math.abs(block[i]));
     // The first block that carries an event's effect reports it (the latency benchmark reads this).
-    if (this.eventIds.length > 0 || ++this.blocks % 8 === 0) {
+    if (this.applied.length > 0 || ++this.blocks % 8 === 0) {
       this.port.postMessage({ type: 'scope', samples: this.scope.slice(), at: this.scopeAt, peak: this.peak,
-                              contacts: x.vimg_live_contacts(), eventIds: this.eventIds, time: currentTime,
+                              contacts: x.vimg_live_contacts(), applied: this.applied, time: currentTime,
                               horizonS: x.vimg_live_prediction_horizon_s() });
-      this.eventIds = [];
+      this.applied = [];
       this.peak = 0;
     }
     return true;

@@ -25,7 +25,8 @@ std::optional<WebSiteOptions> web_site_options(const std::string& actuator_profi
 // The page's files, in the folder the web build wrote them to: VIMG_WEB_ASSETS if set, else the
 // folder CMake named (VIMG_WEB_ASSETS_DIR).
 std::filesystem::path web_assets_dir();
-inline constexpr const char* kWebAssetFiles[] = {"index.html", "picture.js", "vimg.js", "vimg.wasm", "worklet.js"};
+inline constexpr const char* kWebAssetFiles[] = {"index.html", "picture.js", "audio_clock.js", "vimg.js", "vimg.wasm",
+                                                   "worklet.js"};
 // The study's pages (vimg serve --study, docs/studies.md "In the browser"), beside those.
 inline constexpr const char* kStudyAssetFiles[] = {"study.html", "study.js", "dashboard.html"};
 
@@ -33,7 +34,7 @@ inline constexpr const char* kStudyAssetFiles[] = {"study.html", "study.js", "da
 // [A-Za-z0-9_.-] replaced by '_'.
 std::string web_image_name(const std::filesystem::path& image);
 
-// Writes DIR/index.html, picture.js, vimg.js, vimg.wasm, worklet.js, DIR/images/NAME.vsc per image and
+// Writes the page's files (kWebAssetFiles), DIR/images/NAME.vsc per image and
 // DIR/images/index.json (the names in order). Returns the diagnostics (FILE:LINE: error: ...); the
 // site is complete only when there is no error. Files are written atomically.
 std::vector<Diagnostic> build_web_site(const std::vector<std::filesystem::path>& images, const WebSiteOptions& options,

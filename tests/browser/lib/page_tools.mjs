@@ -7,6 +7,22 @@ export async function waitForAudioTime(page, seconds) {
   await page.waitForFunction((t) => window.vimg.audioTime() >= t, { timeout: 30000, polling: 'raf' }, from + seconds);
 }
 
+// The audio callback's period (s): how far the context's currentTime advances at once, the median
+// of 40 advances seen by reading it in a loop on the page's thread (bounded by 5 s against a stall).
+export async function callbackPeriodS(page) {
+  return page.evaluate(() => {
+    const steps = [];
+    let last = window.vimg.audioTime();
+    const until = performance.now() + 5000;
+    while (steps.length < 40 && performance.now() < until) {
+      const t = window.vimg.audioTime();
+      if (t !== last) { steps.push(t - last); last = t; }
+    }
+    steps.sort((x, y) => x - y);
+    return steps[steps.length >> 1];
+  });
+}
+
 // Presses at the left of the primitive's box, moves right 1 mm per 10 ms of audio time (100 mm/s)
 // along its middle, and lifts. Returns the worklet's peak during the drag and the ids lit midway.
 export async function dragAcross(page, primitive) {
