@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cli/command.hpp"
-#include "storage/actuator_profile.hpp"
+#include "cli/compare_inputs.hpp"
 #include "hal/rest_on_exit.hpp"
 #include "storage/gesture_csv.hpp"
 #include "storage/atomic_file.hpp"
@@ -27,6 +27,7 @@ struct CompareArgs {
   std::vector<std::string> inputs;
   std::string actuator;               // profile file; empty: the ideal actuator
   std::vector<std::string> gestures;  // empty: the standard exploration
+  std::string model;                  // MODEL.json of vimg study fit; empty: the default constants
   std::string out;
 };
 
@@ -75,13 +76,13 @@ int run_compare_command(const CompareArgs& a) {
 
   study::CompareRequest request;
   for (const std::string& in : a.inputs) request.inputs.emplace_back(in);
-  if (!a.actuator.empty()) {
-    const ProfileLoadResult loaded = load_actuator_profile(a.actuator);
-    for (const std::string& e : loaded.errors) std::fprintf(stderr, "%s\n", e.c_str());
-    if (!loaded.profile) return kExitFailure;
-    request.actuator.name = loaded.profile->name.empty() ? a.actuator : loaded.profile->name;
-    request.actuator.file = a.actuator;
-    request.actuator.response = loaded.profile->response;
+  auto actuator = load_compare_actuator(a.actuator);
+  if (!actuator) return kExitFailure;
+  request.actuator = std::move(*actuator);
+  if (!a.model.empty()) {
+    const auto model = load_model_argument(a.model);
+    if (!model) return kExitFailure;
+    request.discrimination = model->constants;
   }
   auto gestures = load_gestures(a.gestures);
   if (!gestures) return kExitFailure;
@@ -102,7 +103,7 @@ int run_compare_command(const CompareArgs& a) {
   // Written atomically; a signal that arrives before the rename still leaves nothing.
   // A new report takes the permission bits all the inputs share (one private image keeps it private).
   AtomicFileWriter file(a.out, NewFileMode::of_all({request.inputs.begin(), request.inputs.end()}));
-  file.write(study::compare_output_text(a.out, result));
+  file.write(study::compare_output_text(a.out, result, a.model));
   if (rest_requested()) {
     file.abort();
     return interrupted(a.out);
@@ -131,9 +132,12 @@ void add_compare_command(CLI::App& vimg, int& exit_code) {
   sub->add_option("--gesture", a->gestures,
                   "a gesture CSV to render every image under, instead of the standard exploration; repeat it for several, "
                   "rendered one after another");
+  sub->add_option("--model", a->model,
+                  "MODEL.json of `vimg study fit`: the discrimination model's constants fitted on a study's trials "
+                  "(default: the published figures' constants, docs/perception.md)");
   sub->add_option("--out", a->out,
                   "REPORT.json (matrices and warnings), REPORT.html (self-contained, heat maps) or REPORT.csv (one row per "
-                  "pair: image_i,image_j,stsim,similarity,predicted_p), written atomically")
+                  "pair: image_i,image_j,stsim,level_jnd,pitch_jnd,envelope_jnd,distance_jnd,predicted_p), written atomically")
       ->required();
   sub->footer(
       "Default exploration (docs/studies.md): horizontal and vertical serpentine passes 10 mm apart over the whole canvas at "

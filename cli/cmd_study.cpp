@@ -1,6 +1,7 @@
 // `vimg study report TRIALS.csv... [--predicted COMPARE.json]... --out REPORT.html|.json|.md`: the
 // report of the matching test (primitives paper, section 3) and of the location study (volume
 // paper, section 5) from the trial files the study runners write (docs/studies.md).
+// `vimg study fit`: the discrimination model fitted on the trials (cmd_study_fit.cpp).
 // `vimg study link DIR --participant ID [--url BASE]`: a participant's link to the matching test
 // in the browser (vimg serve --study; docs/studies.md, "In the browser").
 #include <cstdio>
@@ -117,7 +118,7 @@ int run_link(const LinkArgs& a) {
 }  // namespace
 
 void add_study_command(CLI::App& vimg, int& exit_code) {
-  CLI::App* study = vimg.add_subcommand("study", "the matching test and the location study: report their trials (docs/studies.md)");
+  CLI::App* study = vimg.add_subcommand("study", "the matching test and the location study: report their trials, fit the model on them (docs/studies.md)");
   study->set_version_flag("--version", std::string(cmdline::version()), "print the version and exit");
   study->require_subcommand(1);
   CLI::App* report = study->add_subcommand(
@@ -139,6 +140,8 @@ void add_study_command(CLI::App& vimg, int& exit_code) {
       "n, mean error, SD, 99 % t interval, chance, Welch's t-test between metaphors, per-participant means. Statistics, "
       "formulas and the JSON keys: see docs/studies.md. Exit 1 on a malformed file (FILE:LINE: error), nothing written.");
   report->callback([a, &exit_code] { exit_code = run_report(*a); });
+
+  add_study_fit(*study, exit_code);
 
   CLI::App* link = study->add_subcommand("link", "print a participant's link to the matching test in the browser (vimg serve --study)");
   auto l = std::make_shared<LinkArgs>();

@@ -122,8 +122,14 @@ PerceptionMatrix cue_of(const CueMatrix& cues, std::size_t cue) {
   return m;
 }
 
-void describe_model(JsonWriter& w, const CompareResult& r) {
+void describe_model(JsonWriter& w, const CompareResult& r, const std::string& model_file) {
   w.begin_object();
+  w.key("model_file");
+  if (model_file.empty()) {
+    w.null();
+  } else {
+    w.string(model_file);
+  }
   w.key("documentation");
   w.string("docs/perception.md, docs/studies.md");
   w.key("full_scale_peak_acceleration_mps2");
@@ -165,7 +171,7 @@ std::string csv_field(const std::string& text) {
 
 }  // namespace
 
-std::string compare_json(const CompareResult& r) {
+std::string compare_json(const CompareResult& r, const std::string& model_file) {
   JsonWriter w;
   w.begin_object();
   w.key("images");
@@ -232,7 +238,7 @@ std::string compare_json(const CompareResult& r) {
   w.key("exploration");
   describe_exploration(w, r);
   w.key("model");
-  describe_model(w, r);
+  describe_model(w, r, model_file);
   w.end_object();
   std::string text = w.take();
   text += '\n';
@@ -267,9 +273,10 @@ bool is_compare_output(const std::filesystem::path& path) {
   return ext == ".json" || ext == ".html" || ext == ".htm" || ext == ".csv";
 }
 
-std::string compare_output_text(const std::filesystem::path& path, const CompareResult& result) {
+std::string compare_output_text(const std::filesystem::path& path, const CompareResult& result,
+                                const std::string& model_file) {
   const std::string ext = lower_extension(path);
-  return ext == ".json" ? compare_json(result) : ext == ".csv" ? compare_csv(result) : compare_html(result);
+  return ext == ".json" ? compare_json(result, model_file) : ext == ".csv" ? compare_csv(result) : compare_html(result);
 }
 
 std::optional<std::string> write_compare_output(const std::filesystem::path& path, const CompareResult& result) {

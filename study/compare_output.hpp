@@ -25,7 +25,9 @@
 
 namespace vimg::study {
 
-std::string compare_json(const CompareResult& result);
+// `model_file`: the MODEL.json whose constants the comparison used (`vimg compare --model`), written as
+// `model.model_file` (null when empty: the default constants).
+std::string compare_json(const CompareResult& result, const std::string& model_file = {});
 std::string compare_html(const CompareResult& result);
 std::string compare_csv(const CompareResult& result);
 
@@ -33,7 +35,8 @@ std::string compare_csv(const CompareResult& result);
 bool is_compare_output(const std::filesystem::path& path);
 
 // The report's text for `path`'s extension.
-std::string compare_output_text(const std::filesystem::path& path, const CompareResult& result);
+std::string compare_output_text(const std::filesystem::path& path, const CompareResult& result,
+                                const std::string& model_file = {});
 
 // Writes the report for `path`'s extension; the error naming the path, or nothing.
 std::optional<std::string> write_compare_output(const std::filesystem::path& path, const CompareResult& result);

@@ -83,6 +83,28 @@ void predicted(JsonWriter& w, const PredictedComparison& p) {
   w.begin_object();
   w.key("source");
   w.string(p.source);
+  w.key("model_file");
+  if (p.model_file.empty()) {
+    w.null();
+  } else {
+    w.string(p.model_file);
+  }
+  if (p.constants) {
+    w.key("constants");
+    w.begin_object();
+    w.key("temperature_jnd");
+    w.number(p.constants->temperature_jnd);
+    w.key("lapse_rate");
+    w.number(p.constants->lapse_rate);
+    w.key("cue_weight");
+    w.begin_object();
+    for (std::size_t c = 0; c < kCueCount; ++c) {
+      w.key(cue_name(c));
+      w.number(p.constants->cue_weight[c]);
+    }
+    w.end_object();
+    w.end_object();
+  }
   w.key("predicted");
   matrix(w, p.predicted, [&](double x) { optional_number(w, x); });
   w.key("measured");

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "primitives/perception/discrimination_choice.hpp"
 #include "study/report_chance.hpp"
 #include "study/statistics.hpp"
 
@@ -45,6 +46,8 @@ struct ParticipantAccuracy {
 // with the measured confusion (the comparison matrix with each row divided by its total).
 struct PredictedComparison {
   std::string source;  // the COMPARE.json as given
+  std::optional<DiscriminationConstants> constants;  // the model's constants, when the report names them
+  std::string model_file;  // the MODEL.json of `vimg compare --model`; empty: none
   std::vector<std::vector<double>> predicted;  // [presented][chosen], rows sum to 1
   std::vector<std::vector<std::optional<double>>> measured;  // none for an image never presented
   std::size_t off_diagonal_cells = 0;  // cells in the correlation (rows with a measurement)

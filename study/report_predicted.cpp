@@ -30,6 +30,8 @@ std::optional<PredictedComparison> compare_with(const SetReport& set, const Pred
   const std::size_t n = set.images.size();
   PredictedComparison c;
   c.source = p.source;
+  c.constants = p.constants;
+  c.model_file = p.model_file;
   std::vector<double> predicted_cells, measured_cells;
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<double> row(n);

@@ -114,7 +114,20 @@ std::optional<ReportTable> predicted_table(const SetReport& set) {
 std::string predicted_summary_text(const PredictedComparison& p) {
   std::string r = p.correlation ? "r = " + fixed_text(*p.correlation, 3)
                                 : "r is not defined (one side is the same in every cell, e.g. no confusion was measured)";
-  return "Prediction from " + p.source + ". Pearson correlation of predicted and measured confusion over the " +
+  std::string model;
+  if (!p.model_file.empty()) model = ", made with the model " + p.model_file;
+  if (p.constants) {
+    char text[160];
+    std::snprintf(text, sizeof text, "temperature %.3g JND, lapse rate %.3g, cue weights", p.constants->temperature_jnd,
+                  p.constants->lapse_rate);
+    std::string weights = text;
+    for (std::size_t c = 0; c < kCueCount; ++c) {
+      std::snprintf(text, sizeof text, "%s %s %.3g", c ? "," : "", std::string(cue_name(c)).c_str(), p.constants->cue_weight[c]);
+      weights += text;
+    }
+    model += " (" + weights + ")";
+  }
+  return "Prediction from " + p.source + model + ". Pearson correlation of predicted and measured confusion over the " +
          count_text(p.off_diagonal_cells) + " off-diagonal cells: " + r + ".";
 }
 

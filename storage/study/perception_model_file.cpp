@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "storage/export/json_writer.hpp"
+#include "storage/json_checker.hpp"
 #include "storage/json_reader.hpp"
 #include "storage/load_file.hpp"
 
@@ -33,24 +34,36 @@ void strings(JsonWriter& w, const std::vector<std::string>& texts) {
   w.end_array();
 }
 
-class Reader {
+const JsonValue* find_member(JsonChecker& check, const JsonValue& object, std::string_view key, const std::string& where) {
+  const JsonValue* v = object.find(key);
+  if (!v) check.fail(object.line, where + " has no \"" + std::string(key) + "\" key");
+  return v;
+}
+
+std::string trimmed(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+// A number of `v` within (low or [low, high]; high may be infinite).
+bool in_range(JsonChecker& check, const JsonValue& v, const std::string& what, double low, bool low_open, double high, double& out) {
+  if (!check.expect(v, JsonValue::Kind::number, what)) return false;
+  const double x = v.number;
+  const bool above = low_open ? x > low : x >= low;
+  if (!(above && x <= high))
+    return check.fail(v.line, what + " must be " + (low_open ? "> " : ">= ") + trimmed(low) +
+                                  (std::isinf(high) ? std::string() : " and <= " + trimmed(high)));
+  out = x;
+  return true;
+}
+
+class Reader : public JsonChecker {
  public:
-  explicit Reader(const std::string& file_name) : list_(file_name) {}
-
-  bool fail(int line, const std::string& message) {
-    list_.error(line, message);
-    return false;
-  }
-
-  bool expect(const JsonValue& v, JsonValue::Kind kind, const std::string& what) {
-    if (v.kind == kind) return true;
-    return fail(v.line, what + " must be " + std::string(json_kind_name(kind)) + ", not " + std::string(json_kind_name(v.kind)));
-  }
+  explicit Reader(const std::string& file_name) : JsonChecker(file_name) {}
 
   const JsonValue* member(const JsonValue& object, std::string_view key, const std::string& where) {
-    const JsonValue* v = object.find(key);
-    if (!v) fail(object.line, where + " has no \"" + std::string(key) + "\" key");
-    return v;
+    return find_member(*this, object, key, where);
   }
 
   bool header(const JsonValue& root) {
@@ -73,17 +86,6 @@ class Reader {
     return true;
   }
 
-  bool number(const JsonValue& v, const std::string& what, double low, bool low_open, double high, double& out) {
-    if (!expect(v, JsonValue::Kind::number, what)) return false;
-    const double x = v.number;
-    const bool above = low_open ? x > low : x >= low;
-    if (!(above && x <= high))
-      return fail(v.line, what + " must be " + (low_open ? "> " : ">= ") + trimmed(low) +
-                              (std::isinf(high) ? std::string() : " and <= " + trimmed(high)));
-    out = x;
-    return true;
-  }
-
   bool constants(const JsonValue& root, DiscriminationConstants& out) {
     const JsonValue* c = member(root, "constants", "the file");
     if (!c || !expect(*c, JsonValue::Kind::object, "\"constants\"")) return false;
@@ -93,26 +95,7 @@ class Reader {
         return fail(c->items[k].line, "unknown constant \"" + escape_input(key) +
                                           "\" (the constants are temperature_jnd, lapse_rate and cue_weight)");
     }
-    const double inf = INFINITY;
-    const JsonValue* t = member(*c, "temperature_jnd", "\"constants\"");
-    if (!t || !number(*t, "\"temperature_jnd\"", 0.0, true, inf, out.temperature_jnd)) return false;
-    const JsonValue* lapse = member(*c, "lapse_rate", "\"constants\"");
-    if (!lapse || !number(*lapse, "\"lapse_rate\"", 0.0, false, 1.0, out.lapse_rate)) return false;
-    const JsonValue* w = member(*c, "cue_weight", "\"constants\"");
-    if (!w || !expect(*w, JsonValue::Kind::object, "\"cue_weight\"")) return false;
-    std::string names;
-    for (std::size_t cue = 0; cue < kCueCount; ++cue) names += (cue ? ", " : "") + std::string(cue_name(cue));
-    for (std::size_t k = 0; k < w->keys.size(); ++k) {
-      bool known = false;
-      for (std::size_t cue = 0; cue < kCueCount; ++cue) known = known || w->keys[k] == cue_name(cue);
-      if (!known) return fail(w->items[k].line, "unknown cue \"" + escape_input(w->keys[k]) + "\" (the cues are " + names + ")");
-    }
-    for (std::size_t cue = 0; cue < kCueCount; ++cue) {
-      const std::string name(cue_name(cue));
-      const JsonValue* v = member(*w, name, "\"cue_weight\"");
-      if (!v || !number(*v, "the weight of cue \"" + name + "\"", 0.0, false, inf, out.cue_weight[cue])) return false;
-    }
-    return true;
+    return read_discrimination_constants(*this, *c, out);
   }
 
   bool fitted_on(const JsonValue& root, PerceptionModel& out) {
@@ -126,18 +109,32 @@ class Reader {
     return true;
   }
 
-  std::vector<Diagnostic> take() { return list_.take(); }
-
- private:
-  static std::string trimmed(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-  }
-  DiagnosticList list_;
 };
 
 }  // namespace
+
+bool read_discrimination_constants(JsonChecker& check, const JsonValue& object, DiscriminationConstants& out) {
+  const double inf = INFINITY;
+  const JsonValue* t = find_member(check, object, "temperature_jnd", "\"constants\"");
+  if (!t || !in_range(check, *t, "\"temperature_jnd\"", 0.0, true, inf, out.temperature_jnd)) return false;
+  const JsonValue* lapse = find_member(check, object, "lapse_rate", "\"constants\"");
+  if (!lapse || !in_range(check, *lapse, "\"lapse_rate\"", 0.0, false, 1.0, out.lapse_rate)) return false;
+  const JsonValue* w = find_member(check, object, "cue_weight", "\"constants\"");
+  if (!w || !check.expect(*w, JsonValue::Kind::object, "\"cue_weight\"")) return false;
+  std::string names;
+  for (std::size_t cue = 0; cue < kCueCount; ++cue) names += (cue ? ", " : "") + std::string(cue_name(cue));
+  for (std::size_t k = 0; k < w->keys.size(); ++k) {
+    bool known = false;
+    for (std::size_t cue = 0; cue < kCueCount; ++cue) known = known || w->keys[k] == cue_name(cue);
+    if (!known) return check.fail(w->items[k].line, "unknown cue \"" + escape_input(w->keys[k]) + "\" (the cues are " + names + ")");
+  }
+  for (std::size_t cue = 0; cue < kCueCount; ++cue) {
+    const std::string name(cue_name(cue));
+    const JsonValue* v = find_member(check, *w, name, "\"cue_weight\"");
+    if (!v || !in_range(check, *v, "the weight of cue \"" + name + "\"", 0.0, false, inf, out.cue_weight[cue])) return false;
+  }
+  return true;
+}
 
 std::string perception_model_json(const PerceptionModel& m) {
   JsonWriter w;

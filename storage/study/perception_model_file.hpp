@@ -72,6 +72,14 @@ struct PerceptionModelLoadResult {
   std::vector<Diagnostic> diagnostics;
 };
 
+// The constants of a JSON object holding `temperature_jnd` (> 0), `lapse_rate` (in [0, 1]) and
+// `cue_weight` (every cue by name, each >= 0, no other): MODEL.json's `constants`, and the `model`
+// of a `vimg compare` report (storage/study/predicted_confusion.hpp). Other keys of `object` are not
+// looked at. The first problem goes to `check`; false then.
+class JsonChecker;
+struct JsonValue;
+bool read_discrimination_constants(JsonChecker& check, const JsonValue& object, DiscriminationConstants& out);
+
 PerceptionModelLoadResult parse_perception_model(std::string_view json, const std::string& file_name);
 PerceptionModelLoadResult load_perception_model(const std::filesystem::path& file);
 

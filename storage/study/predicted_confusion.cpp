@@ -2,27 +2,19 @@
 
 #include <cmath>
 
+#include "storage/json_checker.hpp"
 #include "storage/json_reader.hpp"
 #include "storage/load_file.hpp"
+#include "storage/study/perception_model_file.hpp"
 #include "storage/study/study_file.hpp"
 
 namespace vimg {
 
 namespace {
 
-class Extractor {
+class Extractor : public JsonChecker {
  public:
-  explicit Extractor(const std::string& file_name) : list_(file_name) {}
-
-  bool fail(int line, const std::string& message) {
-    list_.error(line, message);
-    return false;
-  }
-
-  bool expect(const JsonValue& v, JsonValue::Kind kind, const std::string& what) {
-    if (v.kind == kind) return true;
-    return fail(v.line, what + " must be " + std::string(json_kind_name(kind)) + ", not " + std::string(json_kind_name(v.kind)));
-  }
+  explicit Extractor(const std::string& file_name) : JsonChecker(file_name) {}
 
   bool images(const JsonValue& root, PredictedConfusion& out) {
     const JsonValue* images = root.find("images");
@@ -69,10 +61,20 @@ class Extractor {
     return true;
   }
 
-  std::vector<Diagnostic> take() { return list_.take(); }
-
- private:
-  DiagnosticList list_;
+  // The constants of `model`, when it names all of them (an older report names none: no error).
+  bool constants(const JsonValue& root, PredictedConfusion& out) {
+    const JsonValue* model = root.find("model");
+    if (!model || model->kind != JsonValue::Kind::object) return true;
+    if (const JsonValue* file = model->find("model_file"); file && file->kind != JsonValue::Kind::null) {
+      if (!expect(*file, JsonValue::Kind::string, "\"model_file\" of \"model\"")) return false;
+      out.model_file = file->text;
+    }
+    if (!model->find("temperature_jnd") || !model->find("lapse_rate") || !model->find("cue_weight")) return true;
+    DiscriminationConstants k;
+    if (!read_discrimination_constants(*this, *model, k)) return false;
+    out.constants = k;
+    return true;
+  }
 };
 
 }  // namespace
@@ -89,7 +91,7 @@ PredictedLoadResult parse_predicted_confusion(std::string_view json, const std::
   p.source = file_name;
   const JsonValue& root = *parsed.value;
   const bool ok = extract.expect(root, JsonValue::Kind::object, "the report of `vimg compare`") && extract.images(root, p) &&
-                  extract.matrix(root, p);
+                  extract.matrix(root, p) && extract.constants(root, p);
   result.diagnostics = extract.take();
   if (ok) result.predicted = std::move(p);
   return result;
