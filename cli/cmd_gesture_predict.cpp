@@ -1,4 +1,4 @@
-// `vimg gesture predict G.csv --ahead-ms H [--model none|linear|fitted] --out P.csv`: each row of a
+// `vimg gesture predict G.csv --ahead-ms H [--model none|linear|fitted|learned] --out P.csv`: each row of a
 // gesture with where the touch predictor puts its finger H ms later (player/gesture_prediction.hpp,
 // docs/latency.md).
 #include <cstdio>
@@ -24,7 +24,7 @@ struct PredictArgs {
 
 int run_predict(const PredictArgs& a) {
   const std::optional<TouchPredictionModel> model = parse_touch_prediction_model(a.model);
-  if (!model) return usage_error("vimg gesture predict", "--model must be none, linear or fitted: '" + a.model + "'");
+  if (!model) return usage_error("vimg gesture predict", "--model must be none, linear, fitted or learned: '" + a.model + "'");
   const GestureParseResult gesture = load_gesture_file(a.gesture);
   for (const std::string& e : gesture.errors) std::fprintf(stderr, "%s\n", e.c_str());
   if (!gesture.ok()) return kExitFailure;
@@ -48,9 +48,10 @@ void add_gesture_predict(CLI::App& gesture, int& exit_code) {
   sub->add_option("--ahead-ms", a->ahead_ms, "how far ahead, in ms (decimals allowed, 0 to 1000)")
       ->required()
       ->check(cmdline::finite_in(0.0, kMaxAheadMs));
-  sub->add_option("--model", a->model, "none (the last position), linear (the last velocity) or fitted (default: "
-                                       "the filter fitted on real traces, docs/latency.md)")
-      ->check(CLI::IsMember({"none", "linear", "fitted"}));
+  sub->add_option("--model", a->model, "none (the last position), linear (the last velocity), fitted (the filter "
+                                       "fitted on real traces) or learned (default: the small network trained on "
+                                       "real traces, docs/latency.md)")
+      ->check(CLI::IsMember({"none", "linear", "fitted", "learned"}));
   sub->add_option("--out", a->out, "output CSV (written atomically)")->required();
   sub->footer("Causal: a row's prediction uses that row and the earlier rows of its stroke only. Down and up rows "
               "give their own position (nothing is predicted past a lift). Gesture limits as vimg render's "

@@ -7,8 +7,8 @@ the mean prediction error (px) against the horizon (ms), one panel per task, one
 """
 import sys
 
-APPROACHES = ("no extrapolation", "linear (authors)", "fitted")
-COLOURS = ("#888888", "#d95f02", "#1b9e77")
+APPROACHES = ("no extrapolation", "linear (authors)", "fitted", "learned")
+COLOURS = ("#888888", "#d95f02", "#1b9e77", "#7570b3")
 
 
 def read_table(path):
@@ -16,11 +16,11 @@ def read_table(path):
     with open(path, encoding="utf-8") as f:
         for number, line in enumerate(f, 1):
             cells = [c.strip() for c in line.strip().strip("|").split("|")]
-            if len(cells) != 8 or not cells[1].endswith(" ms"):
+            if len(cells) != 10 or not cells[1].endswith(" ms"):
                 continue
             try:
                 horizon = float(cells[1][:-3])
-                values = [float(c.split()[0]) for c in (cells[3], cells[4], cells[6])]
+                values = [float(c.split()[0]) for c in (cells[3], cells[4], cells[6], cells[7])]
             except ValueError:
                 sys.exit(f"{path}:{number}: error: a table row whose numbers do not read: {line.strip()}")
             rows.setdefault(cells[0], []).append((horizon, values))
@@ -54,10 +54,10 @@ def svg(rows):
             out.append(f'<polyline points="{path}" fill="none" stroke="{colour}" stroke-width="2"/>')
         out.append(f'<text x="{x0 + plot_w / 2}" y="{pad + plot_h + 28}" text-anchor="middle">horizon, ms</text>')
     for a, (name, colour) in enumerate(zip(APPROACHES, COLOURS)):
-        x = pad + a * 170
+        x = pad + a * 130
         out.append(f'<line x1="{x}" y1="{height + 25}" x2="{x + 20}" y2="{height + 25}" stroke="{colour}" stroke-width="2"/>')
         out.append(f'<text x="{x + 25}" y="{height + 29}">{name}</text>')
-    out.append(f'<text x="{pad + 3 * 170}" y="{height + 29}">mean error, px (12.72 px/mm)</text>')
+    out.append(f'<text x="{pad + 4 * 130}" y="{height + 29}">mean error, px (12.72 px/mm; in sample)</text>')
     out.append("</svg>")
     return "\n".join(out) + "\n"
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "primitives/touch_prediction/fitted_weights.hpp"
+#include "primitives/touch_prediction/learned_predictor.hpp"
 
 namespace vimg {
 
@@ -117,12 +118,14 @@ std::string_view touch_prediction_model_name(TouchPredictionModel model) {
     case TouchPredictionModel::none: return "none";
     case TouchPredictionModel::linear: return "linear";
     case TouchPredictionModel::fitted: return "fitted";
+    case TouchPredictionModel::learned: return "learned";
   }
   return "fitted";
 }
 
 std::optional<TouchPredictionModel> parse_touch_prediction_model(std::string_view name) {
-  for (TouchPredictionModel m : {TouchPredictionModel::none, TouchPredictionModel::linear, TouchPredictionModel::fitted}) {
+  for (TouchPredictionModel m : {TouchPredictionModel::none, TouchPredictionModel::linear, TouchPredictionModel::fitted,
+                                 TouchPredictionModel::learned}) {
     if (name == touch_prediction_model_name(m)) return m;
   }
   return std::nullopt;
@@ -156,6 +159,7 @@ PredictedPosition predict_finger(const FingerHistory& history, double horizon_s,
     case TouchPredictionModel::none: break;
     case TouchPredictionModel::linear: return linear(history, h);
     case TouchPredictionModel::fitted: return fitted(history, h);
+    case TouchPredictionModel::learned: return predict_learned(history, h);
   }
   const FingerHistory::Point& now = point(history, 0);
   return {now.x_mm, now.y_mm};

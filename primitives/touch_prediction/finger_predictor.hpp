@@ -16,7 +16,7 @@
 //   none:    p(t_n)                                   (the last position)
 //   linear:  p(t_n) + v h, v = (p(t_n) - p(t_m)) / (t_n - t_m), t_m the newest stored point at
 //            least 1 ms before t_n (v = 0 when there is none): the last velocity.
-//   fitted:  p(t_n) + sum_k w_k(h) d_k, the default. d_k = p(t_n - k L) - p(t_n), k = 1..12,
+//   fitted:  p(t_n) + sum_k w_k(h) d_k. d_k = p(t_n - k L) - p(t_n), k = 1..12,
 //            L = 1/120 s (100 ms of history), p between stored points linear, and before the
 //            first point equal to it (the finger was put down there). The weights are a blend of
 //            two least-squares filters fitted on real traces (fitted_weights.hpp, made by
@@ -28,6 +28,8 @@
 //            takes over as the history departs from a straight line. Weights are linear in h
 //            between the fitted horizons j L (j = 1..24, w(0) = 0); beyond 200 ms the 200 ms
 //            weights are scaled by h / 200 ms (still exact at constant velocity).
+//   learned: the default; a small fixed-weight network on the recent steps in the stroke's frame
+//            (learned_predictor.hpp).
 //
 // Bounds (tests/touch_prediction/, docs/latency.md "What the tests hold it to"):
 //   - a still finger (all d_k = 0) is predicted where it is, by every model;
@@ -50,11 +52,13 @@
 
 namespace vimg {
 
-enum class TouchPredictionModel : std::uint8_t { none, linear, fitted };
+enum class TouchPredictionModel : std::uint8_t { none, linear, fitted, learned };
+inline constexpr int kTouchPredictionModelCount = 4;
 
-inline constexpr TouchPredictionModel kDefaultTouchPredictionModel = TouchPredictionModel::fitted;
+// The best out of sample (docs/latency.md, "How well it predicts").
+inline constexpr TouchPredictionModel kDefaultTouchPredictionModel = TouchPredictionModel::learned;
 
-// "none", "linear", "fitted".
+// "none", "linear", "fitted", "learned".
 std::string_view touch_prediction_model_name(TouchPredictionModel model);
 std::optional<TouchPredictionModel> parse_touch_prediction_model(std::string_view name);
 

@@ -16,7 +16,7 @@ double distance_mm(const FingerHistory::Point& a, double x_mm, double y_mm) {
 }
 
 struct Sums {
-  double none = 0.0, authors_linear = 0.0, model[3] = {0.0, 0.0, 0.0};
+  double none = 0.0, authors_linear = 0.0, model[kTouchPredictionModelCount] = {};
   std::size_t samples = 0;
 };
 
@@ -48,7 +48,7 @@ void evaluate_stroke(const TouchStroke& stroke, int s, double period_s, Sums& su
       const FingerHistory::Point& e = ev[static_cast<std::size_t>(added)];
       add_finger_event(history, e.time_s, e.x_mm, e.y_mm);
     }
-    for (int m = 0; m < 3; ++m) {
+    for (int m = 0; m < kTouchPredictionModelCount; ++m) {
       const PredictedPosition p = predict_finger(history, s * period_s, static_cast<TouchPredictionModel>(m));
       sums.model[m] += distance_mm(target, p.x_mm, p.y_mm);
     }
@@ -67,7 +67,7 @@ ProtocolErrors evaluate_prediction_protocol(std::span<const TouchStroke> strokes
   const double n = static_cast<double>(sums.samples);
   r.none_mm = sums.none / n;
   r.authors_linear_mm = sums.authors_linear / n;
-  for (int m = 0; m < 3; ++m) r.model_mm[m] = sums.model[m] / n;
+  for (int m = 0; m < kTouchPredictionModelCount; ++m) r.model_mm[m] = sums.model[m] / n;
   return r;
 }
 

@@ -30,7 +30,7 @@ struct ProtocolErrors {
   std::size_t samples = 0;
   double none_mm = 0.0;            // the authors' no extrapolation
   double authors_linear_mm = 0.0;  // now + s x the last step
-  double model_mm[3] = {0.0, 0.0, 0.0};  // indexed by TouchPredictionModel: none, linear, fitted
+  double model_mm[kTouchPredictionModelCount] = {};  // indexed by TouchPredictionModel
 };
 
 ProtocolErrors evaluate_prediction_protocol(std::span<const TouchStroke> strokes, int steps_ahead,
