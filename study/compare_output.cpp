@@ -5,6 +5,7 @@
 
 #include "storage/atomic_file.hpp"
 #include "storage/export/json_writer.hpp"
+#include "storage/study/perception_model_file.hpp"
 #include "storage/file_extension.hpp"
 #include "storage/number_text.hpp"
 #include "storage/signal_file.hpp"
@@ -142,17 +143,7 @@ void describe_model(JsonWriter& w, const CompareResult& r, const std::string& mo
   w.number(kFrequencyWeberFraction);
   w.key("choice_model");
   w.string("p(j|i) = (1 - lapse) exp(-D_ij / T) / sum_k exp(-D_ik / T) + lapse / n, D = sqrt(sum_c (w_c d_c)^2)");
-  w.key("temperature_jnd");
-  w.number(r.discrimination.temperature_jnd);
-  w.key("lapse_rate");
-  w.number(r.discrimination.lapse_rate);
-  w.key("cue_weight");
-  w.begin_object();
-  for (std::size_t c = 0; c < kCueCount; ++c) {
-    w.key(std::string(cue_name(c)));
-    w.number(r.discrimination.cue_weight[c]);
-  }
-  w.end_object();
+  write_discrimination_constants(w, r.discrimination);
   w.key("likely_confused_p");
   w.number(r.choice.likely_confused_p);
   w.end_object();

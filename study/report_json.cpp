@@ -2,6 +2,7 @@
 #include <optional>
 
 #include "storage/export/json_writer.hpp"
+#include "storage/study/perception_model_file.hpp"
 #include "study/report_writers.hpp"
 
 namespace vimg::study {
@@ -92,17 +93,7 @@ void predicted(JsonWriter& w, const PredictedComparison& p) {
   if (p.constants) {
     w.key("constants");
     w.begin_object();
-    w.key("temperature_jnd");
-    w.number(p.constants->temperature_jnd);
-    w.key("lapse_rate");
-    w.number(p.constants->lapse_rate);
-    w.key("cue_weight");
-    w.begin_object();
-    for (std::size_t c = 0; c < kCueCount; ++c) {
-      w.key(cue_name(c));
-      w.number(p.constants->cue_weight[c]);
-    }
-    w.end_object();
+    write_discrimination_constants(w, *p.constants);
     w.end_object();
   }
   w.key("predicted");

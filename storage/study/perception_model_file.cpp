@@ -136,6 +136,20 @@ bool read_discrimination_constants(JsonChecker& check, const JsonValue& object, 
   return true;
 }
 
+void write_discrimination_constants(JsonWriter& w, const DiscriminationConstants& k) {
+  w.key("temperature_jnd");
+  w.number(k.temperature_jnd);
+  w.key("lapse_rate");
+  w.number(k.lapse_rate);
+  w.key("cue_weight");
+  w.begin_object();
+  for (std::size_t cue = 0; cue < kCueCount; ++cue) {
+    w.key(cue_name(cue));
+    w.number(k.cue_weight[cue]);
+  }
+  w.end_object();
+}
+
 std::string perception_model_json(const PerceptionModel& m) {
   JsonWriter w;
   w.begin_object();
@@ -145,17 +159,7 @@ std::string perception_model_json(const PerceptionModel& m) {
   w.integer(kPerceptionModelVersion);
   w.key("constants");
   w.begin_object();
-  w.key("temperature_jnd");
-  w.number(m.constants.temperature_jnd);
-  w.key("lapse_rate");
-  w.number(m.constants.lapse_rate);
-  w.key("cue_weight");
-  w.begin_object();
-  for (std::size_t cue = 0; cue < kCueCount; ++cue) {
-    w.key(cue_name(cue));
-    w.number(m.constants.cue_weight[cue]);
-  }
-  w.end_object();
+  write_discrimination_constants(w, m.constants);
   w.end_object();
   w.key("fitted");
   strings(w, m.fitted);

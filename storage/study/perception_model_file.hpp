@@ -77,8 +77,11 @@ struct PerceptionModelLoadResult {
 // of a `vimg compare` report (storage/study/predicted_confusion.hpp). Other keys of `object` are not
 // looked at. The first problem goes to `check`; false then.
 class JsonChecker;
+class JsonWriter;
 struct JsonValue;
 bool read_discrimination_constants(JsonChecker& check, const JsonValue& object, DiscriminationConstants& out);
+// Writes those three members into the object `w` has open (MODEL.json, the compare and study reports).
+void write_discrimination_constants(JsonWriter& w, const DiscriminationConstants& constants);
 
 PerceptionModelLoadResult parse_perception_model(std::string_view json, const std::string& file_name);
 PerceptionModelLoadResult load_perception_model(const std::filesystem::path& file);
