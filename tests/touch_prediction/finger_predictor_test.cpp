@@ -12,12 +12,14 @@
 
 #include "every_model.hpp"
 #include "fitted_reference.hpp"
+#include "sampled_history.hpp"
 
 namespace vimg {
 namespace {
 
 using namespace touch_prediction;
 using test::fitted_weights_at;
+using test::history_of;
 using test::Lags;
 using test::TouchEvent;
 
@@ -29,19 +31,6 @@ double closed_form_error(const Lags& w, double v, double a, double h) {
     m2 += w[static_cast<std::size_t>(k - 1)] * k * k * kFittedLag_s * kFittedLag_s;
   }
   return v * (-m1 - h) + 0.5 * a * (m2 - h * h);
-}
-
-// A path sampled at `rate_hz` for `duration_s`, the last event at time t_end.
-template <class Path>
-FingerHistory history_of(Path path, double rate_hz, double duration_s, double t_end = 10.0) {
-  FingerHistory h;
-  const int n = static_cast<int>(std::lround(duration_s * rate_hz));
-  for (int i = n; i >= 0; --i) {
-    const double t = t_end - i / rate_hz;
-    const auto [x, y] = path(t);
-    add_finger_event(h, t, x, y);
-  }
-  return h;
 }
 
 TEST(FingerPredictor, ConstantVelocityIsExactForTheLinearAndFittedModels) {
