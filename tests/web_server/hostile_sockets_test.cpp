@@ -5,11 +5,13 @@
 // connection a worker of a fixed pool (24) has every worker held by the slow sockets and answers
 // nobody. The hostile sockets' pace is theirs; the test waits only on states (all hostile sockets
 // connected, each reply's bytes), and kPromptBound is generous: the server answers in milliseconds.
+// Also: a closed event stream gives its place back at once.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <chrono>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -17,6 +19,7 @@
 
 #include "tests/web_server/raw_http.hpp"
 #include "tests/web_server/site_fixture.hpp"
+#include "web/server/event_stream.hpp"
 
 namespace vimg::test {
 namespace {
@@ -142,6 +145,27 @@ TEST_F(HostileSockets, AParticipantIsAnsweredBesideSilentAndSlowSockets) {
   const std::lock_guard lock(answers_mutex);
   ASSERT_EQ(answers.size(), std::size_t{kAnswers});
   for (int trial = 1; trial <= kAnswers; ++trial) EXPECT_EQ(answers[trial - 1], "trial=" + std::to_string(trial));
+}
+
+// A page that closes its event stream frees its place among the kMaxEventStreams at once, not at
+// the server's next keep-alive comment (15 s): pages that come and go (reloads, a poller that
+// only checks the greeting) never lock the others out.
+TEST_F(HostileSockets, AClosedEventStreamFreesItsPlaceAtOnce) {
+  start_server();
+  for (int round = 0; round < 3; ++round) {
+    {
+      std::vector<std::unique_ptr<RawConnection>> pages;
+      for (int i = 0; i < web::kMaxEventStreams; ++i) {
+        pages.push_back(std::make_unique<RawConnection>(port()));
+        ASSERT_TRUE(pages.back()->send_all("GET /events HTTP/1.1\r\nHost: localhost\r\n\r\n"));
+        ASSERT_TRUE(pages.back()->read_until(": connected\n")) << pages.back()->received();
+      }
+      EXPECT_EQ(server_->open_event_streams(), web::kMaxEventStreams);
+    }  // every page closes its stream
+    const auto give_up = Clock::now() + kPromptBound;
+    while (server_->open_event_streams() > 0 && Clock::now() < give_up) std::this_thread::yield();
+    ASSERT_EQ(server_->open_event_streams(), 0) << "round " << round << ": closed streams still hold their places";
+  }
 }
 
 }  // namespace

@@ -213,6 +213,12 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
   void open_stream() {
     head_.clear();
     stream_open_ = true;
+    // A page that closes its stream is noticed at once (its slot of kMaxEventStreams freed), not at
+    // the next keep-alive comment: a read stays pending, untimed (a write's deadline is its own).
+    tcp_layer().expires_never();
+    stream_.async_read_some(net::buffer(scratch_), [self = this->shared_from_this()](beast::error_code, std::size_t) {
+      self->finish();
+    });
     arm_keep_alive();
     events_changed();  // what was published while the greeting was written
   }
@@ -230,7 +236,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
   void flush_stream() {
     if (writing_ || finished_) return;
     if (outbox_.empty()) {
-      if (ending_) close_gracefully();
+      if (ending_) finish();  // the last chunk is out (the read pending rules out a graceful drain)
       return;
     }
     writing_ = true;
