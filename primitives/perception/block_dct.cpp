@@ -12,33 +12,21 @@ namespace vimg::detail {
 namespace {
 
 constexpr std::size_t kN = kStSimBlockSamples;
-constexpr int kLog2N = 9;
-static_assert(std::size_t{1} << kLog2N == kN);
 
 struct Tables {
-  std::array<double, kN / 2> twiddle_re{};  // exp(-2 pi i j / N)
-  std::array<double, kN / 2> twiddle_im{};
+  Radix2Plan fft = radix2_plan(kN);
   std::array<double, kN> post_re{};          // 2 scale_k exp(-i pi k / (2N))
   std::array<double, kN> post_im{};
-  std::array<std::size_t, kN> bit_reversed{};
 };
 
 Tables make_tables() {
   Tables t;
   const double n = static_cast<double>(kN);
-  for (std::size_t j = 0; j < kN / 2; ++j) {
-    const double angle = -2.0 * std::numbers::pi * static_cast<double>(j) / n;
-    t.twiddle_re[j] = std::cos(angle);
-    t.twiddle_im[j] = std::sin(angle);
-  }
   for (std::size_t k = 0; k < kN; ++k) {
     const double scale = 2.0 * (k == 0 ? std::sqrt(1.0 / (4.0 * n)) : std::sqrt(1.0 / (2.0 * n)));
     const double angle = -std::numbers::pi * static_cast<double>(k) / (2.0 * n);
     t.post_re[k] = scale * std::cos(angle);
     t.post_im[k] = scale * std::sin(angle);
-    std::size_t r = 0;
-    for (int b = 0; b < kLog2N; ++b) r |= ((k >> b) & 1u) << (kLog2N - 1 - b);
-    t.bit_reversed[k] = r;
   }
   return t;
 }
@@ -57,10 +45,10 @@ void orthonormal_dct_512(std::span<const double, kStSimBlockSamples> block,
   std::array<double, kN> re{};
   std::array<double, kN> im{};
   for (std::size_t n = 0; n < kN / 2; ++n) {
-    re[t.bit_reversed[n]] = block[2 * n];
-    re[t.bit_reversed[kN - 1 - n]] = block[2 * n + 1];
+    re[t.fft.bit_reversed[n]] = block[2 * n];
+    re[t.fft.bit_reversed[kN - 1 - n]] = block[2 * n + 1];
   }
-  radix2_fft(re, im, t.twiddle_re, t.twiddle_im);
+  radix2_fft(re, im, t.fft);
   for (std::size_t k = 0; k < kN; ++k) coefficients[k] = re[k] * t.post_re[k] - im[k] * t.post_im[k];
 }
 
