@@ -1,0 +1,3 @@
+#include <cstdio>
+#include <fstream>
+void load(const char* path) { std::ifstream in(path); FILE* f = std::fopen(path, "rb"); (void)f; }

@@ -1,0 +1,2 @@
+#include <cstdio>
+void make(const char* path) { FILE* f = std::fopen(path, "rb"); (void)f; }
