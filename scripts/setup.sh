@@ -13,7 +13,7 @@ packages=(
   locales
   libboost-math-dev python3-numpy python3-scipy
   help2man desktop-file-utils dpkg-dev file
-  emscripten chromium libcpp-httplib-dev libqrencode-dev libssl-dev openssl
+  emscripten chromium libboost-dev libqrencode-dev libssl-dev openssl
 )
 
 missing=()
