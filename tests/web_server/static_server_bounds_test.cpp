@@ -54,17 +54,12 @@ TEST_F(StaticServerBounds, FifosAndDevicesAreNeverRead) {
   fs::create_symlink("pipe.vsc", site_ / "images" / "to_pipe.vsc");  // resolves inside the site
   fs::create_symlink("/dev/zero", site_ / "zero.vsc");                  // a device out of the site
   fs::create_symlink("/dev", site_ / "dev");
-  // A device node of /dev/zero inside the site itself, where the machine lets us make one (root).
-  const bool device_made = ::mknod((site_ / "zero_here.vsc").c_str(), S_IFCHR | 0644, makedev(1, 5)) == 0;
   start_server();
   EXPECT_EQ(answered(port(), "/pipe.vsc").status, 404);
   EXPECT_EQ(answered(port(), "/images/to_pipe.vsc").status, 404);
   EXPECT_EQ(answered(port(), "/zero.vsc").status, 403);
   EXPECT_EQ(answered(port(), "/dev/zero").status, 403);
   EXPECT_EQ(answered(port(), "/dev/urandom").status, 403);
-  if (device_made) {
-    EXPECT_EQ(answered(port(), "/zero_here.vsc").status, 404);
-  }
   // The FIFO was never opened: a reader would have waited for a writer, and a writer opening it
   // without blocking now finds no reader.
   const int writer = ::open((site_ / "pipe.vsc").c_str(), O_WRONLY | O_NONBLOCK);
@@ -72,6 +67,19 @@ TEST_F(StaticServerBounds, FifosAndDevicesAreNeverRead) {
   EXPECT_EQ(errno, ENXIO);
   if (writer >= 0) ::close(writer);
   // Every refusal was logged with its status; the server still serves.
+  EXPECT_EQ(answered(port(), "/index.html").status, 200);
+}
+
+// A device node of /dev/zero inside the site itself. Making one needs CAP_MKNOD (root; CI runs as
+// root and runs this case); without it the case is reported as skipped, with the reason, never as
+// a pass.
+TEST_F(StaticServerBounds, ADeviceNodeInsideTheSiteIsNeverRead) {
+  if (::mknod((site_ / "zero_here.vsc").c_str(), S_IFCHR | 0644, makedev(1, 5)) != 0) {
+    GTEST_SKIP() << "cannot make a device node in the site (" << std::strerror(errno)
+                 << "): needs CAP_MKNOD, i.e. root";
+  }
+  start_server();
+  EXPECT_EQ(answered(port(), "/zero_here.vsc").status, 404);
   EXPECT_EQ(answered(port(), "/index.html").status, 200);
 }
 
