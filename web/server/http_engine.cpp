@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <atomic>
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
@@ -63,7 +64,7 @@ struct HttpEngine::Impl {
   std::optional<net::executor_work_guard<net::io_context::executor_type>> work;
   std::thread network;
   int port = 0;
-  bool running = false;
+  std::atomic<bool> running{false};  // read by wake_event_streams() from any thread
 
   void accept() {
     acceptor->async_accept(state.io, [this](beast::error_code ec, tcp::socket socket) {
@@ -162,8 +163,7 @@ void HttpEngine::wake_event_streams() {
 
 void HttpEngine::stop() {
   Impl& s = *impl_;
-  if (!s.running) return;
-  s.running = false;
+  if (!s.running.exchange(false)) return;
   std::promise<void> closed;
   net::post(s.state.io, [&s, &closed] {
     s.state.stopping = true;
