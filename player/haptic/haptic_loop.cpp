@@ -148,18 +148,15 @@ void HapticLoop::run() {
   const auto period_ns = static_cast<std::int64_t>(std::llround(1e9 / config_.rate_hz));
   // The catch-up rule (realtime/catch_up.hpp): half the overrun limit; the watchdog counts only
   // work that does not fit in the period, never the cycles caught up after a stall.
-  const std::int64_t catch_up_periods = haptic_catch_up_periods(cycle_.safety().overrun_limit_cycles());
   const std::int64_t start_ns = monotonic_ns();
-  std::int64_t deadline_ns = start_ns;
+  PacedSchedule schedule{period_ns, haptic_catch_up_periods(cycle_.safety().overrun_limit_cycles()), start_ns};
   bool overran_last = false;
   for (;;) {
-    deadline_ns += period_ns;
-    sleep_until_ns(deadline_ns);
+    sleep_until_ns(next_deadline_ns(schedule));
     const std::int64_t woke_ns = monotonic_ns();
-    telemetry_.record_wake(woke_ns, deadline_ns);
-    const PacedDeadline paced = pace_deadline(deadline_ns, woke_ns, period_ns, catch_up_periods);
-    deadline_ns = paced.deadline_ns;
-    if (paced.skipped) telemetry_.record_skip();
+    telemetry_.record_wake(woke_ns, schedule.deadline_ns);
+    if (on_wake(schedule, woke_ns).skipped) telemetry_.record_skip();
+    const std::int64_t deadline_ns = schedule.deadline_ns;
     // The loop's time goes on from the previous run's last cycle: a port never sees it go back.
     const double time_s = previous_runs_s_ + static_cast<double>(deadline_ns - start_ns) * 1e-9;
 
@@ -193,8 +190,9 @@ void HapticLoop::run() {
     const std::int64_t finished_ns = monotonic_ns();
     // The telemetry counts every cycle that finished behind its schedule; the watchdog only work
     // that did not fit in the period (realtime/catch_up.hpp).
-    if (overran(deadline_ns, finished_ns, period_ns)) telemetry_.record_overrun();
-    overran_last = work_overran(woke_ns, finished_ns, period_ns);
+    const CycleEnd end = on_finish(schedule, woke_ns, finished_ns);
+    if (end.behind) telemetry_.record_overrun();
+    overran_last = end.work_overran;
   }
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "realtime/catch_up.hpp"
+
 namespace vimg {
 namespace {
 
@@ -98,7 +100,7 @@ SafetyOutput SafetyStack::apply(const SafetyInput& in) noexcept {
   }
   have_sequence_ = true;
   last_sequence_ = in.sequence;
-  overruns_in_row_ = in.previous_overran ? overruns_in_row_ + 1 : 0;
+  overruns_in_row_ = count_overruns_in_row(overruns_in_row_, in.previous_overran);
   if (fault_ == ForceFault::stale_input) return zero(safety_flag::stale);
   if (fault_ == ForceFault::overruns) return zero(safety_flag::overrun);
   if (fault_ != ForceFault::none) return zero(safety_flag::device);
@@ -150,7 +152,7 @@ SafetyOutput SafetyStack::apply(const SafetyInput& in) noexcept {
     return zero(flags | safety_flag::stale);
   }
   // 6. Overruns.
-  if (overruns_in_row_ >= overrun_limit_) {
+  if (overrun_watchdog_trips(overruns_in_row_, overrun_limit_)) {
     fault_ = ForceFault::overruns;
     return zero(flags | safety_flag::overrun);
   }

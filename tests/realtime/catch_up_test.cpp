@@ -23,31 +23,28 @@ struct ScheduleRun {
   bool faulted = false;  // the streak reached the limit
 };
 
-// The haptic loop's schedule (HapticLoop::run) on a fake clock: sleep until the deadline, wake
-// `wake_delay_us(n)` late, pace the cycle, work `work_us(n)`, and count overruns in a row as the
-// loop hands them to the safety stack.
+// The haptic loop's schedule on a fake clock, through the functions HapticLoop::run and the safety
+// stack call (realtime/catch_up.hpp): sleep until the deadline, wake `wake_delay_us(n)` late, pace
+// the cycle, work `work_us(n)`, and count overruns in a row as the watchdog does.
 ScheduleRun run_schedule(int cycles, const std::function<std::int64_t(int)>& wake_delay_us,
                          const std::function<std::int64_t(int)>& work_us) {
   FakeClock clock(1'000'000);
-  const std::int64_t period_ns = kPeriodUs * 1000;
-  const int catch_up = haptic_catch_up_periods(kOverrunLimit);
+  PacedSchedule schedule{kPeriodUs * 1000, haptic_catch_up_periods(kOverrunLimit), clock.now_us() * 1000};
   ScheduleRun run;
-  std::int64_t deadline_ns = clock.now_us() * 1000;
   int streak = 0;
   for (int n = 0; n < cycles; ++n) {
-    deadline_ns += period_ns;
-    clock.sleep_until_us(deadline_ns / 1000);
+    clock.sleep_until_us(next_deadline_ns(schedule) / 1000);
     clock.advance_us(wake_delay_us(n));
     const std::int64_t woke_ns = clock.now_us() * 1000;
-    const PacedDeadline paced = pace_deadline(deadline_ns, woke_ns, period_ns, catch_up);
-    deadline_ns = paced.deadline_ns;
-    if (paced.skipped) ++run.skips;
+    if (on_wake(schedule, woke_ns).skipped) ++run.skips;
     clock.advance_us(work_us(n));
-    if (overran(deadline_ns, clock.now_us() * 1000, period_ns)) ++run.behind;
-    streak = work_overran(woke_ns, clock.now_us() * 1000, period_ns) ? streak + 1 : 0;
+    const CycleEnd end = on_finish(schedule, woke_ns, clock.now_us() * 1000);
+    if (end.behind) ++run.behind;
+    // The safety stack counts the previous cycle's overrun at the next cycle; counted here at once.
+    streak = count_overruns_in_row(streak, end.work_overran);
     run.longest_overrun_streak = std::max(run.longest_overrun_streak, streak);
+    run.faulted = run.faulted || overrun_watchdog_trips(streak, kOverrunLimit);
   }
-  run.faulted = run.longest_overrun_streak >= kOverrunLimit;
   return run;
 }
 
