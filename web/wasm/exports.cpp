@@ -83,7 +83,7 @@ double vimg_default_render_rate_hz() { return vimg::kDefaultRenderRateHz; }
 int vimg_max_live_fingers() { return vimg::kMaxLiveFingers; }
 
 // The predictor's models by index (TouchPredictionModel), for the benchmark below.
-int vimg_prediction_model_count() { return static_cast<int>(vimg::TouchPredictionModel::fitted) + 1; }
+int vimg_prediction_model_count() { return vimg::kTouchPredictionModelCount; }
 const char* vimg_prediction_model_name(int model) {
   if (model < 0 || model >= vimg_prediction_model_count()) return "";
   return vimg::touch_prediction_model_name(static_cast<vimg::TouchPredictionModel>(model)).data();
