@@ -120,7 +120,9 @@ int run_compare_command(const CompareArgs& a) {
 
 void add_compare_command(CLI::App& vimg, int& exit_code) {
   CLI::App* sub = vimg.add_subcommand(
-      "compare", "predict which images of a set people will confuse (ST-SIM, sensation level, Shepard-Luce choice)");
+      "compare",
+      "predict which images of a set people will confuse (level, pitch and envelope cues in JNDs, Shepard-Luce "
+      "choice; ST-SIM reported)");
   sub->set_version_flag("--version", std::string(cmdline::version()), "print the version and exit");
   auto a = std::make_shared<CompareArgs>();
   sub->add_option("IMAGE", a->inputs,
