@@ -118,8 +118,8 @@ int main(int argc, char** argv) {
   std::fprintf(log, "deadline_s,sent_s,x_px,y_px,event\n");
   std::vector<double> late_ms;
   for (const Sent& s : sent) {
-    std::fprintf(log, "%.6f,%.6f,%d,%d,%s\n", s.deadline_ns * 1e-9, s.sent_ns * 1e-9, s.x_px, s.y_px, s.event);
-    late_ms.push_back((s.sent_ns - s.deadline_ns) * 1e-6);
+    std::fprintf(log, "%.6f,%.6f,%d,%d,%s\n", static_cast<double>(s.deadline_ns) * 1e-9, static_cast<double>(s.sent_ns) * 1e-9, s.x_px, s.y_px, s.event);
+    late_ms.push_back(static_cast<double>(s.sent_ns - s.deadline_ns) * 1e-6);
   }
   std::fclose(log);
   std::sort(late_ms.begin(), late_ms.end());
