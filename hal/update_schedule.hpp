@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <span>
 
+#include "player/render_defaults.hpp"
 #include "realtime/clock.hpp"
 
 namespace vimg {
@@ -41,7 +42,7 @@ class UpdateSchedule {
   }
 
  private:
-  double sample_rate_hz_ = 8000.0;
+  double sample_rate_hz_ = kDefaultRenderRateHz;
   std::int64_t samples_per_update_ = 1;
   std::int64_t sample_counter_ = 0;
   std::int64_t epoch_us_ = 0;

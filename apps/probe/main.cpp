@@ -24,6 +24,7 @@
 #include "cmdline/exit_codes.hpp"
 #include "hal/force/force_device_opener.hpp"
 #include "hal/rest_on_exit.hpp"
+#include "player/render_defaults.hpp"
 #include "storage/print_diagnostics.hpp"
 #include "storage/volume/volume_scene_io.hpp"
 
@@ -32,7 +33,7 @@ namespace {
 using vimg::Vec3;
 
 constexpr int kPxPerMm = 5;
-constexpr double kAudioRate = 8000.0;
+constexpr double kAudioRate = vimg::kDefaultRenderRateHz;  // the audio sink runs at the render rate
 
 struct View {
   Vec3 lo_mm, hi_mm;  // the workspace box
