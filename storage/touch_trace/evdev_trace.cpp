@@ -7,7 +7,7 @@
 #include <map>
 
 #include "storage/limits.hpp"
-#include "storage/read_file.hpp"
+#include "storage/load_file.hpp"
 #include "storage/text_bytes.hpp"
 #include "storage/touch_trace/evdev_line.hpp"
 #include "storage/touch_trace/touch_log.hpp"
@@ -356,14 +356,7 @@ std::string touch_axis_problem(const TouchAxis& axis, const std::string& name) {
 }
 
 TouchTraceParseResult load_touch_trace(const std::filesystem::path& path) {
-  const FileReadResult read = read_regular_file(path, kMaxTouchTraceFileBytes);
-  if (!read.bytes) {
-    TouchTraceParseResult r;
-    const std::string problem = read.error.starts_with("cannot open") ? "cannot open file" : read.error;
-    r.diagnostics.push_back({Diagnostic::Severity::error, path.string(), 0, printable_message(problem)});
-    return r;
-  }
-  return parse_touch_trace(*read.bytes, path.string());
+  return load_file<TouchTraceParseResult>(path, kMaxTouchTraceFileBytes, parse_touch_trace);
 }
 
 }  // namespace vimg

@@ -63,7 +63,10 @@ NrrdVolumeResult read_nrrd_volume(std::string_view bytes, const std::string& fil
 // The same, reporting to `list` (for callers that add their own checks).
 std::optional<NrrdVolume> read_nrrd_volume(std::string_view bytes, const NrrdReadOptions& options, DiagnosticList& list);
 // The bytes of a .nrrd or .nhdr file (read_regular_file, kMaxVolumeFileBytes) and the options
-// that keep its data file in its folder; on failure, the diagnostic that says why.
+// that keep its data file in its folder; on failure, the diagnostic that says why, as
+// storage/load_file.hpp words it ("FILE: error: cannot open: REASON"). Not load_file itself: the
+// caller keeps the bytes (a detached header's data is read after), and load_file's parse step
+// would copy a volume of up to kMaxVolumeFileBytes a second time.
 struct NrrdFile {
   std::optional<std::string> bytes;
   NrrdReadOptions options;

@@ -202,8 +202,7 @@ NrrdFile read_nrrd_file(const std::filesystem::path& path, const NamedFileOption
   NrrdFile file;
   FileReadResult read = read_regular_file(path, kMaxVolumeFileBytes);
   if (!read.bytes) {
-    const std::string problem = read.error.starts_with("cannot open") ? "cannot open file" : read.error;
-    file.diagnostics.push_back({Diagnostic::Severity::error, path.string(), 0, printable_message(problem)});
+    file.diagnostics.push_back({Diagnostic::Severity::error, path.string(), 0, printable_message(read.error)});
     return file;
   }
   file.bytes = std::move(read.bytes);

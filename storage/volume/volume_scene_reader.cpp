@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "storage/limits.hpp"
+#include "storage/load_file.hpp"
 #include "storage/named_file.hpp"
 #include "storage/number_text.hpp"
 #include "storage/xml_attributes.hpp"
@@ -312,16 +313,14 @@ VolumeSceneParseResult parse_volume_scene_xml(std::string_view xml, const std::s
   return result;
 }
 
-VolumeSceneLoadResult load_volume_scene_file(const std::filesystem::path& path, const VolumeSceneLoadOptions& options) {
+namespace {
+
+// The scene file's bytes (`text`) parsed, its data files read from its folder.
+VolumeSceneLoadResult load_volume_scene_text(std::string_view text, const std::filesystem::path& path,
+                                             const VolumeSceneLoadOptions& options) {
   VolumeSceneLoadResult result;
   DiagnosticList list(path.string());
-  const FileReadResult text = read_regular_file(path, kMaxSceneFileBytes);
-  if (!text.bytes) {
-    list.error(0, text.error.starts_with("cannot open") ? "cannot open file" : text.error);
-    result.diagnostics = list.take();
-    return result;
-  }
-  std::optional<VolumeScene> scene = parse_scene(*text.bytes, list);
+  std::optional<VolumeScene> scene = parse_scene(text, list);
   if (!scene) {
     result.diagnostics = list.take();
     return result;
@@ -371,6 +370,14 @@ VolumeSceneLoadResult load_volume_scene_file(const std::filesystem::path& path, 
   for (auto& d : data_diagnostics) result.diagnostics.push_back(std::move(d));
   if (!failed) result.loaded = std::move(loaded);
   return result;
+}
+
+}  // namespace
+
+VolumeSceneLoadResult load_volume_scene_file(const std::filesystem::path& path, const VolumeSceneLoadOptions& options) {
+  return load_file<VolumeSceneLoadResult>(path, kMaxSceneFileBytes, [&](std::string_view text, const std::string&) {
+    return load_volume_scene_text(text, path, options);
+  });
 }
 
 }  // namespace vimg

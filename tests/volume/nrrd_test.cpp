@@ -180,7 +180,7 @@ TEST(Nrrd, LoadsAFileWithItsGeometry) {
 TEST(Nrrd, MissingFileIsAnError) {
   const NrrdLoadResult r = load_nrrd_file("/nonexistent/volume.nrrd");
   EXPECT_FALSE(r.ok());
-  EXPECT_EQ(first_message(r), "/nonexistent/volume.nrrd: error: cannot open file");
+  EXPECT_EQ(first_message(r), "/nonexistent/volume.nrrd: error: cannot open: No such file or directory");
 }
 
 }  // namespace
