@@ -129,8 +129,8 @@ void Drv2605lDriver::initialize() {
   calibration_warning_.reset();
   if (!options_.calibration_file.empty()) {
     const CalibrationLoadResult stored = load_calibration(options_.calibration_file);
-    if (!stored.error.empty()) {
-      calibration_warning_ = stored.error;
+    if (!stored.diagnostics.empty()) {
+      calibration_warning_ = stored.error();
     } else if (stored.calibration) {
       if (std::fabs(stored.calibration->resonance_hz - profile_.resonance_hz) <= 0.01 * profile_.resonance_hz) {
         apply_calibration(*stored.calibration);

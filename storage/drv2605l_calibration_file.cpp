@@ -4,7 +4,7 @@
 
 #include "storage/atomic_file.hpp"
 #include "storage/diagnostic.hpp"
-#include "storage/read_file.hpp"
+#include "storage/load_file.hpp"
 
 #include <charconv>
 #include <cstdio>
@@ -29,13 +29,7 @@ std::optional<std::string> save_calibration(const Drv2605lCalibration& calibrati
 CalibrationLoadResult load_calibration(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return {};  // no file: nothing to restore
-  FileReadResult read = read_regular_file(path, kMaxCalibrationFileBytes);
-  if (!read.bytes) {
-    CalibrationLoadResult result;
-    result.error = path.string() + ": error: " + read.error;
-    return result;
-  }
-  return parse_calibration(*read.bytes, path.string());
+  return load_file<CalibrationLoadResult>(path, kMaxCalibrationFileBytes, parse_calibration);
 }
 
 CalibrationLoadResult parse_calibration(std::string_view text, const std::string& file_name) {
@@ -46,7 +40,7 @@ CalibrationLoadResult parse_calibration(std::string_view text, const std::string
   std::string line;
   int line_number = 0;
   auto fail = [&](const std::string& problem) {
-    result.error = file_name + ":" + std::to_string(line_number) + ": error: " + problem;
+    result.diagnostics.push_back(Diagnostic{Diagnostic::Severity::error, file_name, line_number, problem});
     return result;
   };
   while (std::getline(in, line)) {

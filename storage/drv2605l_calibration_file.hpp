@@ -11,6 +11,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "storage/diagnostic.hpp"
 
 namespace vimg {
 
@@ -28,9 +31,11 @@ std::optional<std::string> save_calibration(const Drv2605lCalibration& calibrati
 
 struct CalibrationLoadResult {
   std::optional<Drv2605lCalibration> calibration;
-  std::string error;  // "FILE:LINE: error: problem" when calibration is empty and the file exists
+  std::vector<Diagnostic> diagnostics;  // one error when calibration is empty and the file exists
+  // The error as text ("FILE:LINE: error: problem", "FILE: error: ..." for a read error), or "".
+  std::string error() const { return diagnostics.empty() ? std::string() : diagnostics.front().to_string(); }
 };
-// No file: an empty result without error. The file is read through the bounded reader.
+// No file: an empty result without error. Otherwise read through storage/load_file.hpp.
 CalibrationLoadResult load_calibration(const std::filesystem::path& path);
 // The text of a calibration file (key=value lines); `file_name` names it in messages.
 CalibrationLoadResult parse_calibration(std::string_view text, const std::string& file_name);

@@ -28,7 +28,7 @@ TEST(CalibrationFile, SavedAtomicallyAndReadBack) {
   c.bemf_gain = 2;
   ASSERT_EQ(save_calibration(c, path), std::nullopt);
   const CalibrationLoadResult r = load_calibration(path);
-  ASSERT_TRUE(r.calibration) << r.error;
+  ASSERT_TRUE(r.calibration) << r.error();
   EXPECT_NEAR(r.calibration->resonance_hz, 171.25, 1e-3);
   EXPECT_EQ(r.calibration->a_cal_bemf, 0x9A);
   for (const auto& e : std::filesystem::directory_iterator(path.parent_path())) {
@@ -39,18 +39,18 @@ TEST(CalibrationFile, SavedAtomicallyAndReadBack) {
 TEST(CalibrationFile, ADeviceOrAHugeFileIsRefusedWithoutReadingIt) {
   const CalibrationLoadResult zero = load_calibration("/dev/zero");
   EXPECT_FALSE(zero.calibration);
-  EXPECT_EQ(zero.error, "/dev/zero: error: is not a regular file (a character device)");
+  EXPECT_EQ(zero.error(), "/dev/zero: error: is not a regular file (a character device)");
   const auto big = scratch("big.cal");
   { std::ofstream(big) << std::string(kMaxCalibrationFileBytes + 1, '#'); }
-  EXPECT_NE(load_calibration(big).error.find("(limit " + std::to_string(kMaxCalibrationFileBytes) + " bytes)"),
+  EXPECT_NE(load_calibration(big).error().find("(limit " + std::to_string(kMaxCalibrationFileBytes) + " bytes)"),
             std::string::npos);
-  EXPECT_EQ(load_calibration(scratch("missing.cal")).error, "");  // no file: nothing to restore, no error
+  EXPECT_EQ(load_calibration(scratch("missing.cal")).error(), "");  // no file: nothing to restore, no error
 }
 
 TEST(CalibrationFile, MessagesQuoteValuesSafely) {
   const CalibrationLoadResult r = parse_calibration("resonance_hz=175\na_cal_comp=\x1b[2J\n", "x.cal");
-  EXPECT_EQ(r.error, "x.cal:2: error: 'a_cal_comp' must be a byte value, not '\\x1B[2J'");
-  EXPECT_EQ(parse_calibration("resonance_hz=nan\n", "x.cal").error, "x.cal:1: error: resonance_hz must be a positive number");
+  EXPECT_EQ(r.error(), "x.cal:2: error: 'a_cal_comp' must be a byte value, not '\\x1B[2J'");
+  EXPECT_EQ(parse_calibration("resonance_hz=nan\n", "x.cal").error(), "x.cal:1: error: resonance_hz must be a positive number");
 }
 
 TEST(ActuatorProfileFile, ADeviceIsRefusedWithoutReadingIt) {
