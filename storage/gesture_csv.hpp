@@ -20,6 +20,10 @@ struct GestureParseResult {
 
 // `file_name` is used in messages only.
 GestureParseResult parse_gesture_csv(std::string_view text, const std::string& file_name);
+// Reads through read_regular_file (kMaxCsvFileBytes) with load_file's wording ("FILE: error: " and
+// read_file's reason), but not through storage/load_file.hpp itself: its problems are strings, not
+// Diagnostics, and about ten readers of `errors` (the commands, vimg-player, the page's wasm, the
+// editor's recorder) would change with them; left for a change of its own.
 GestureParseResult load_gesture_file(const std::filesystem::path& path);
 
 // One row of a gesture file, as a recorder takes it from a touch panel.
