@@ -10,6 +10,9 @@
 //   file       ... and every row is the plan's presented image and set, with the response chosen
 //   dashboard  the dashboard's report is `vimg study report` of the same file, byte for byte, and
 //              the link its form makes is the one `vimg study link` prints
+//   dashboard  ... and its numbers are the ones the test's own trials give (the plan's presented
+//              image, the answer the test chose): per set the comparison matrix, the participant's
+//              trials, correct and accuracy, and the accuracy's 95 % Wilson interval computed here
 //   loading    before the study is loaded, window.vimg.study.state() is {phase: 'loading'}
 //   refused    an answer refused for good (403) is sent once and the page says what to do
 // Waits are on states (a printed URL, a row in the file, a promise), each bounded only against a hang.
@@ -61,6 +64,67 @@ async function check(name, body) {
     results.push({ name, ok: false });
     console.log(`FAIL ${name}: ${e.stack || e.message}`);
   }
+}
+// The 40 trials as this test planned and answered them: the participant's plan (the server's state)
+// and the responses this test gave, independent of the trial file and of the report's code.
+async function plannedTrials() {
+  const key = new URLSearchParams(link.split('#')[1]).get('key');
+  const state = await (await fetch(`${server.url}api/state?participant=demo`, { headers: { 'X-Vimg-Key': key } })).json();
+  return state.plan.slice(0, 40).map(([set, image], i) => ({ set: state.sets[set].name, images: state.sets[set].images,
+    presented: state.sets[set].images[image], chosen: responses.get(i + 1) }));
+}
+// The dashboard's report against the trials this test planned and answered, with nothing taken from
+// the report's code: per set the sentence (trials, accuracy, its 95 % Wilson score interval
+// (p + z^2/2n +- z sqrt(p(1-p)/n + z^2/4n^2)) / (1 + z^2/n), chance 1/images), every cell of the
+// comparison matrix (read by the names in its header) and the participant's row.
+const escapeHtml = (text) => text.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;')
+  .replace(/"/g, '&quot;').replace(/'/g, '&#39;');
+const percent = (fraction) => `${(100 * fraction).toFixed(1)} %`;
+function wilson95(correct, n) {
+  const z = 1.959963984540054;  // the standard normal's 0.975 quantile
+  const p = correct / n;
+  const centre = (p + z * z / (2 * n)) / (1 + z * z / n);
+  const half = (z / (1 + z * z / n)) * Math.sqrt(p * (1 - p) / n + z * z / (4 * n * n));
+  return [centre - half, centre + half];
+}
+const cells = (row) => [...row.matchAll(/<t[hd]>(.*?)<\/t[hd]>/g)].map((m) => m[1]);
+function checkReportAgainstTrials(report, planned) {
+  const names = [...new Set(planned.map((t) => t.set))];
+  for (const name of names) {
+    const trials = planned.filter((t) => t.set === name);
+    const images = trials[0].images;
+    const n = trials.length;
+    const correct = trials.filter((t) => t.presented === t.chosen).length;
+    const start = report.indexOf(`<h3>Set ${escapeHtml(name)}</h3>`);
+    assert(start >= 0, `the report has no section for set ${name}`);
+    const end = report.indexOf('<h3>', start + 4);
+    const section = report.slice(start, end < 0 ? report.length : end);
+    const [lower, upper] = wilson95(correct, n);
+    const sentence = `<p>${n} trials by 1 participant; accuracy ${percent(correct / n)} (95 % Wilson interval ` +
+      `${(100 * lower).toFixed(1)}\u2013${(100 * upper).toFixed(1)} %) against chance ${percent(1 / images.length)} (${images.length} images).</p>`;
+    assert(section.includes(sentence), `set ${name}: the report does not say ${sentence}`);
+    const participantRow = `<tr><td>demo</td><td>${n}</td><td>${correct}</td><td>${percent(correct / n)}</td></tr>`;
+    assert(section.includes(participantRow), `set ${name}: the report has no participant row ${participantRow}`);
+    const table = section.match(/<table>\s*<caption>Comparison matrix[^]*?<\/table>/);
+    assert(table, `set ${name}: the report has no comparison matrix`);
+    const [header, ...body] = [...table[0].matchAll(/<tr>.*?<\/tr>/g)].map((m) => cells(m[0]));
+    const chosenNames = header.slice(1, -1);
+    assert(JSON.stringify([...chosenNames].sort()) === JSON.stringify(images.map(escapeHtml).sort()),
+           `set ${name}: the matrix's columns ${chosenNames} are not the set's images ${images}`);
+    const count = (presented, chosen) => trials.filter((t) => (presented === null || escapeHtml(t.presented) === presented) &&
+                                                              (chosen === null || escapeHtml(t.chosen) === chosen)).length;
+    assert(body.length === images.length + 1, `set ${name}: the matrix has ${body.length} rows`);
+    for (const row of body) {
+      const presented = row[0] === 'total' ? null : row[0];
+      const want = [...chosenNames.map((chosen) => count(presented, chosen)), count(presented, null)].map(String);
+      assert(JSON.stringify(row.slice(1)) === JSON.stringify(want),
+             `set ${name}, presented ${row[0]}: the matrix says ${row.slice(1)}, the test's trials ${want}`);
+    }
+  }
+  return names.map((name) => {
+    const trials = planned.filter((t) => t.set === name);
+    return `${name} ${trials.filter((t) => t.presented === t.chosen).length}/${trials.length}`;
+  }).join(', ');
 }
 const rows = () => (fs.existsSync(art('results/demo.trials.csv')) ? readTrials(art('results/demo.trials.csv')) : []);
 
@@ -125,11 +189,10 @@ await check('file', async () => {
   const got = rows();
   assert(got.length === 40 && got.every((r, i) => Number(r.trial) === i + 1), 'the file does not hold trials 1..40 once each');
   // Every row against the participant's plan (the server's state) and the responses given.
-  const key = new URLSearchParams(link.split('#')[1]).get('key');
-  const state = await (await fetch(`${server.url}api/state?participant=demo`, { headers: { 'X-Vimg-Key': key } })).json();
+  const planned = await plannedTrials();
   for (let i = 0; i < 40; ++i) {
-    const [set, image] = state.plan[i];
-    const want = { participant: 'demo', set: state.sets[set].name, presented: state.sets[set].images[image], chosen: responses.get(i + 1) };
+    const { set, presented, chosen } = planned[i];
+    const want = { participant: 'demo', set, presented, chosen };
     want.correct = want.presented === want.chosen ? '1' : '0';
     for (const column of Object.keys(want)) {
       assert(got[i][column] === want[column], `trial ${i + 1} ${column}: file ${got[i][column]}, plan and responses ${want[column]}`);
@@ -155,6 +218,7 @@ await check('dashboard', async () => {
   await dashboard.waitForFunction(() => document.getElementById('report').srcdoc.includes('</html>'), { timeout: 30000 });
   const report = await dashboard.evaluate(() => document.getElementById('report').srcdoc);
   assert(report === fs.readFileSync(art('report.html'), 'utf8') || false, 'the dashboard\'s report differs from vimg study report');
+  const sets = checkReportAgainstTrials(report, await plannedTrials());
   // The dashboard's form makes a participant's link: the one `vimg study link` prints.
   await dashboard.type('#participant', 'tablet-7');
   await dashboard.click('#make-link button');
@@ -162,7 +226,7 @@ await check('dashboard', async () => {
   const made = await dashboard.evaluate(() => document.getElementById('link').textContent);
   const printed = execFileSync(vimg, ['study', 'link', art('results'), '--participant', 'tablet-7'], { encoding: 'utf8' }).trim();
   assert(made === printed, `the dashboard made the link ${made}, vimg study link prints ${printed}`);
-  return 'the same HTML as vimg study report; the same link as vimg study link';
+  return `the same HTML as vimg study report, whose numbers are the test's own trials' (${sets}); the same link as vimg study link`;
 });
 
 // Before the study is loaded (its state request held back), window.vimg.study.state() says so
