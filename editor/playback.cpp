@@ -46,12 +46,14 @@ void Playback::set_on(bool on, const Image& image) {
       return;
     }
     if (!options_.record_gesture.empty()) play_->set_recording(true);
+    pointer_time_.set_enabled(true);
     on_ = true;
     notices_.status = "playing to " + options_.output.text;
     return;
   }
   on_ = false;
   mouse_finger_down_ = false;
+  pointer_time_.set_enabled(false);
   if (!play_) return;
   play_->stop();
   notices_.status = "drawing";
@@ -88,7 +90,7 @@ std::optional<std::string> Playback::save_gesture(const std::string& path) const
 
 void Playback::handle_input(const SDL_Event& event, const CanvasView& canvas, SDL_Window* window, bool popup_open) {
   if (!on_ || !play_ || !play_->playing()) return;
-  const double now = monotonic_s();
+  const double now = pointer_time_.time_of(event, monotonic_s());
   auto mm = [&](float x, float y) { return canvas.view().to_mm(Point2Px{x, y}); };
   switch (event.type) {
     case SDL_MOUSEBUTTONDOWN:

@@ -18,6 +18,7 @@
 #include "editor/actuator_choice.hpp"
 #include "editor/core/actuator_feel.hpp"
 #include "editor/core/predicted_scope.hpp"
+#include "editor/pointer_time.hpp"
 #include "editor/core/viewport.hpp"
 #include "editor/editor_options.hpp"
 #include "editor/notices.hpp"
@@ -89,6 +90,7 @@ class Playback {
   bool on_ = false;
   TouchCompensation touch_;
   bool mouse_finger_down_ = false;
+  PointerTime pointer_time_;  // each pointer event at its own time, not when handled
   std::uint64_t played_change_ = 0;
   std::vector<float> scope_samples_;
   std::vector<float> scope_acceleration_;
