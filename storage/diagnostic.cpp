@@ -98,6 +98,25 @@ bool has_errors(const std::vector<Diagnostic>& diagnostics) {
                      [](const Diagnostic& d) { return d.severity == Diagnostic::Severity::error; });
 }
 
+std::string join_diagnostics(const std::vector<Diagnostic>& diagnostics) {
+  std::string text;
+  for (const Diagnostic& d : diagnostics) {
+    if (!text.empty()) text += "\n";
+    text += d.to_string();
+  }
+  return text;
+}
+
+void append_diagnostics(std::vector<Diagnostic>& to, std::vector<Diagnostic> from) {
+  for (Diagnostic& d : from) to.push_back(std::move(d));
+}
+
+std::string listed_names(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
 DiagnosticList::DiagnosticList(std::string file, Order order, std::size_t limit)
     : file_(std::move(file)), order_by_line_(order == Order::by_line), limit_(std::max<std::size_t>(limit, 1)) {}
 

@@ -28,6 +28,15 @@ struct Diagnostic {
 
 bool has_errors(const std::vector<Diagnostic>& diagnostics);
 
+// The diagnostics one a line (each to_string()), as a dialog or a log shows them; "" for none.
+std::string join_diagnostics(const std::vector<Diagnostic>& diagnostics);
+
+// Moves every diagnostic of `from` to the end of `to`, in order.
+void append_diagnostics(std::vector<Diagnostic>& to, std::vector<Diagnostic> from);
+
+// Names as a message lists them: "a, b, c" ("" for none).
+std::string listed_names(const std::vector<std::string>& names);
+
 // The diagnostics of one file from two passes (say an import, then its result read back), within
 // the same bound as one DiagnosticList: `first` then `second`, and when more than `limit`, the last
 // warnings and then the last errors are left out and counted on one summary line with those the

@@ -14,19 +14,15 @@ namespace vimg::study {
 
 namespace {
 
-void append(std::vector<Diagnostic>& to, std::vector<Diagnostic> from) {
-  for (Diagnostic& d : from) to.push_back(std::move(d));
-}
-
 // A file whose first line is neither header: the reader's own words when it could not be read or
 // holds no line yet (an empty file is a warning), otherwise one error naming both headers.
 void unknown_kind(const std::filesystem::path& file, std::vector<Diagnostic>& out) {
   TrialTableResult<MatchingTrial> as_matching = read_matching_trials(file);
-  if (as_matching.ok()) return append(out, std::move(as_matching.diagnostics));
+  if (as_matching.ok()) return append_diagnostics(out, std::move(as_matching.diagnostics));
   TrialTableResult<LocationTrial> as_location = read_location_trials(file);
-  if (as_location.ok()) return append(out, std::move(as_location.diagnostics));
+  if (as_location.ok()) return append_diagnostics(out, std::move(as_location.diagnostics));
   for (const Diagnostic& d : as_matching.diagnostics) {
-    if (d.severity == Diagnostic::Severity::error && d.line == 0) return append(out, std::move(as_matching.diagnostics));
+    if (d.severity == Diagnostic::Severity::error && d.line == 0) return append_diagnostics(out, std::move(as_matching.diagnostics));
   }
   out.push_back(Diagnostic{Diagnostic::Severity::error, file.string(), 1,
                            "not a trial file: the first line is neither the matching test's header (participant,set,trial,...) "
@@ -92,7 +88,7 @@ ReportInputs read_report_inputs(const std::vector<std::filesystem::path>& trial_
     if (kind == TrialFileKind::matching) {
       TrialTableResult<MatchingTrial> r = read_matching_trials(file);
       const bool ok = r.ok();
-      append(in.diagnostics, std::move(r.diagnostics));
+      append_diagnostics(in.diagnostics, std::move(r.diagnostics));
       for (std::size_t k = 0; ok && k < r.rows.size(); ++k) {
         const MatchingTrial& t = r.rows[k];
         if (!registry.add(name, k, "matching", t.participant, t.trial, in.diagnostics)) break;
@@ -102,7 +98,7 @@ ReportInputs read_report_inputs(const std::vector<std::filesystem::path>& trial_
     } else if (kind == TrialFileKind::location) {
       TrialTableResult<LocationTrial> r = read_location_trials(file);
       const bool ok = r.ok();
-      append(in.diagnostics, std::move(r.diagnostics));
+      append_diagnostics(in.diagnostics, std::move(r.diagnostics));
       for (std::size_t k = 0; ok && k < r.rows.size(); ++k) {
         const LocationTrial& t = r.rows[k];
         if (!registry.add(name, k, "location", t.participant, t.trial, in.diagnostics)) break;
@@ -114,7 +110,7 @@ ReportInputs read_report_inputs(const std::vector<std::filesystem::path>& trial_
   }
   for (const std::filesystem::path& file : predicted_files) {
     PredictedLoadResult r = load_predicted_confusion(file);
-    append(in.diagnostics, std::move(r.diagnostics));
+    append_diagnostics(in.diagnostics, std::move(r.diagnostics));
     if (r.predicted) in.predictions.push_back(std::move(*r.predicted));
   }
   return in;
@@ -125,7 +121,7 @@ StudyReport make_study_report(const ReportInputs& inputs, std::vector<Diagnostic
   report.inputs = inputs.files;
   if (!inputs.matching.empty()) {
     report.matching = make_matching_report(inputs.matching);
-    append(warnings, attach_predictions(*report.matching, inputs.predictions));
+    append_diagnostics(warnings, attach_predictions(*report.matching, inputs.predictions));
   } else {
     for (const PredictedConfusion& p : inputs.predictions) {
       warnings.push_back(Diagnostic{Diagnostic::Severity::warning, p.source, 0, "no matching trials to compare it with; left out"});

@@ -8,15 +8,6 @@
 
 namespace vimg::editor {
 
-std::string join_diagnostics(const std::vector<Diagnostic>& diagnostics) {
-  std::string out;
-  for (const Diagnostic& d : diagnostics) {
-    if (!out.empty()) out += "\n";
-    out += d.to_string();
-  }
-  return out;
-}
-
 ImportQuestion import_question(const std::string& path) {
   ImportQuestion q;
   if (lower_extension(path) != ".png") return q;

@@ -98,7 +98,4 @@ struct ImportQuestion {
 };
 ImportQuestion import_question(const std::string& path);
 
-// The diagnostics one a line, as the problem dialog shows them.
-std::string join_diagnostics(const std::vector<Diagnostic>& diagnostics);
-
 }  // namespace vimg::editor

@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "storage/csv_lines.hpp"
+#include "storage/diagnostic.hpp"
 #include "storage/limits.hpp"
 #include "storage/load_file.hpp"
 #include "storage/text_trim.hpp"
@@ -20,12 +21,6 @@ std::vector<std::string_view> split_cells(std::string_view line) {
     if (comma == std::string_view::npos) return cells;
     start = comma + 1;
   }
-}
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string text;
-  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
-  return text;
 }
 
 // "5, 9, 12" and "and N more" after the first few.
@@ -82,7 +77,7 @@ ResponsesResult parse_responses(std::string_view text, const std::string& file_n
     while (image < stems.size() && stems[image] != cells[1]) ++image;
     if (image == stems.size()) {
       problems.error(line_number, "trial " + std::to_string(trial) + ": '" + escape_input(cells[1]) +
-                                      "' is not an image of its set (" + joined(stems) + ")");
+                                      "' is not an image of its set (" + listed_names(stems) + ")");
       continue;
     }
     answered_at[trial - 1] = line_number;

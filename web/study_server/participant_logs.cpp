@@ -28,15 +28,6 @@ bool something_at(const std::filesystem::path& file) {
   return std::filesystem::symlink_status(file, ec).type() != std::filesystem::file_type::not_found;
 }
 
-std::string joined(const std::vector<Diagnostic>& diagnostics) {
-  std::string text;
-  for (const Diagnostic& d : diagnostics) {
-    if (!text.empty()) text += "\n";
-    text += d.to_string();
-  }
-  return text;
-}
-
 }  // namespace
 
 std::variant<TrialLog, std::vector<Diagnostic>> ParticipantLogs::open_log(const std::string& participant) const {
@@ -59,7 +50,7 @@ void ParticipantLogs::open(const std::string& participant, ParticipantEntry& ent
     entry.finished = true;
     return;
   }
-  entry.error = joined(std::get<std::vector<Diagnostic>>(opened));
+  entry.error = join_diagnostics(std::get<std::vector<Diagnostic>>(opened));
 }
 
 std::optional<std::string> ParticipantLogs::append(const std::string& participant, ParticipantEntry& entry,
@@ -67,7 +58,7 @@ std::optional<std::string> ParticipantLogs::append(const std::string& participan
   const bool made_here = !entry.log && !something_at(trial_file(dir_, participant));
   if (!entry.log) {
     auto opened = open_log(participant);
-    if (auto* problems = std::get_if<std::vector<Diagnostic>>(&opened)) return joined(*problems);
+    if (auto* problems = std::get_if<std::vector<Diagnostic>>(&opened)) return join_diagnostics(*problems);
     entry.log = std::move(std::get<TrialLog>(opened));
   }
   const auto error = entry.log->append(cells);
