@@ -81,7 +81,7 @@ int run_fit(const FitArgs& a) {
     std::fprintf(stderr, "%s: %s not written\n", kProgram, a.out.c_str());
     return kExitFailure;
   }
-  if (const auto refusal = study::fit_refusal(inputs.data, request.defaults)) {
+  if (const auto refusal = study::fit_refusal(inputs.data)) {
     std::fprintf(stderr, "%s: error: %s; %s not written\n", kProgram, refusal->c_str(), a.out.c_str());
     return kExitFailure;
   }

@@ -28,13 +28,17 @@ std::vector<ChoiceCounts> pooled_counts(const FitData& data, std::size_t left_ou
   return pooled;
 }
 
+double set_trials(const ChoiceCounts& set) {
+  double n = 0.0;
+  for (const auto& row : set) {
+    for (const double c : row) n += c;
+  }
+  return n;
+}
+
 double total_trials(const std::vector<ChoiceCounts>& counts) {
   double n = 0.0;
-  for (const ChoiceCounts& set : counts) {
-    for (const auto& row : set) {
-      for (const double c : row) n += c;
-    }
-  }
+  for (const ChoiceCounts& set : counts) n += set_trials(set);
   return n;
 }
 
@@ -42,7 +46,7 @@ double log_likelihood(const std::vector<CueMatrix>& set_cues, const std::vector<
                       const DiscriminationConstants& constants) {
   double ll = 0.0;
   for (std::size_t s = 0; s < set_cues.size(); ++s) {
-    if (total_trials({counts[s]}) == 0.0) continue;
+    if (set_trials(counts[s]) == 0.0) continue;
     const PerceptionMatrix p = discrimination_confusion(set_cues[s], constants);
     for (std::size_t i = 0; i < p.size(); ++i) {
       for (std::size_t j = 0; j < p.size(); ++j) {
@@ -56,7 +60,7 @@ double log_likelihood(const std::vector<CueMatrix>& set_cues, const std::vector<
 double chance_log_likelihood(const std::vector<ChoiceCounts>& counts) {
   double ll = 0.0;
   for (const ChoiceCounts& set : counts) {
-    if (!set.empty()) ll -= total_trials({set}) * std::log(static_cast<double>(set.size()));
+    if (!set.empty()) ll -= set_trials(set) * std::log(static_cast<double>(set.size()));
   }
   return ll;
 }

@@ -38,6 +38,8 @@ struct FitData {
 
 // The counts of every participant but `left_out` (every participant when it is out of range), per set.
 std::vector<ChoiceCounts> pooled_counts(const FitData& data, std::size_t left_out = static_cast<std::size_t>(-1));
+// The trials of one set, and of every set.
+double set_trials(const ChoiceCounts& set);
 double total_trials(const std::vector<ChoiceCounts>& counts);
 
 // sum over sets and cells of count * ln p(chosen | presented); a cell whose p underflows counts as

@@ -97,7 +97,7 @@ std::vector<std::size_t> candidate_constants(const FitData& data, const std::vec
                                              std::vector<std::string>& warnings) {
   std::vector<CueMatrix> tried;
   for (std::size_t s = 0; s < data.set_cues.size(); ++s) {
-    if (total_trials({pooled[s]}) > 0.0) tried.push_back(data.set_cues[s]);
+    if (set_trials(pooled[s]) > 0.0) tried.push_back(data.set_cues[s]);
   }
   std::vector<std::size_t> free{0};
   for (std::size_t c = 0; c < kCueCount; ++c) {
@@ -118,8 +118,7 @@ std::string edge_text(std::size_t k, const DiscriminationConstants& defaults) {
 
 }  // namespace
 
-std::optional<std::string> fit_refusal(const FitData& data, const DiscriminationConstants& defaults) {
-  (void)defaults;
+std::optional<std::string> fit_refusal(const FitData& data) {
   const std::vector<ChoiceCounts> pooled = pooled_counts(data);
   const double trials = total_trials(pooled);
   if (trials == 0.0) return "the trial files hold no trials of the study's sets: nothing to fit";

@@ -69,6 +69,6 @@ ModelFit fit_discrimination_model(const FitData& data, const FitOptions& options
 // Why `data` cannot be fitted, or nothing: no trials, fewer than 2 participants (nobody to hold out),
 // fewer than kMinTrialsPerFreeConstant trials per free constant.
 inline constexpr double kMinTrialsPerFreeConstant = 10.0;
-std::optional<std::string> fit_refusal(const FitData& data, const DiscriminationConstants& defaults);
+std::optional<std::string> fit_refusal(const FitData& data);
 
 }  // namespace vimg::study

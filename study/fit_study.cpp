@@ -4,22 +4,13 @@
 #include <set>
 #include <utility>
 
+#include "storage/diagnostic.hpp"
 #include "storage/study/study_file.hpp"
 #include "storage/study/trial_table.hpp"
 
 namespace vimg::study {
 
 namespace {
-
-void append(std::vector<Diagnostic>& to, std::vector<Diagnostic> from) {
-  for (Diagnostic& d : from) to.push_back(std::move(d));
-}
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
-  return s;
-}
 
 // The study's sets by name, each with its images' stems.
 struct StudyIndex {
@@ -44,12 +35,12 @@ struct StudyIndex {
 std::optional<std::string> foreign(const MatchingTrial& t, const StudyIndex& index, const std::string& study) {
   const auto s = index.set(t.set);
   if (!s) {
-    return "set '" + t.set + "' is not a set of " + study + " (its sets: " + joined(index.set_names) +
+    return "set '" + t.set + "' is not a set of " + study + " (its sets: " + listed_names(index.set_names) +
            "): a trial file of another study?";
   }
   for (const std::string* image : {&t.presented, &t.chosen}) {
     if (!index.image(*s, *image)) {
-      return "image '" + *image + "' is not in set '" + t.set + "' of " + study + " (its images: " + joined(index.stems[*s]) +
+      return "image '" + *image + "' is not in set '" + t.set + "' of " + study + " (its images: " + listed_names(index.stems[*s]) +
              "): a trial file of another study?";
     }
   }
@@ -66,7 +57,7 @@ StudyFitInputs read_study_fit_inputs(const StudyFitRequest& request) {
   StudyFitInputs in;
   const std::string study_name = request.study.string();
   StudyFileResult<MatchingStudy> loaded = load_matching_study(request.study);
-  append(in.diagnostics, std::move(loaded.diagnostics));
+  append_diagnostics(in.diagnostics, std::move(loaded.diagnostics));
   if (!loaded.study) return in;
   const MatchingStudy& study = *loaded.study;
   StudyIndex index;
@@ -89,7 +80,7 @@ StudyFitInputs read_study_fit_inputs(const StudyFitRequest& request) {
     }
     TrialTableResult<MatchingTrial> table = read_matching_trials(path);
     const bool ok = table.ok();
-    append(in.diagnostics, std::move(table.diagnostics));
+    append_diagnostics(in.diagnostics, std::move(table.diagnostics));
     if (!ok) continue;
     for (std::size_t k = 0; k < table.rows.size(); ++k) {
       const MatchingTrial& t = table.rows[k];
@@ -125,7 +116,7 @@ StudyFitInputs read_study_fit_inputs(const StudyFitRequest& request) {
   // Sets without trials are not rendered: they add nothing to the likelihood.
   for (std::size_t s = 0; s < study.sets.size(); ++s) {
     double trials = 0.0;
-    for (const auto& sets : data.counts) trials += total_trials({sets[s]});
+    for (const auto& sets : data.counts) trials += set_trials(sets[s]);
     if (trials == 0.0) {
       data.set_cues.emplace_back(CueMatrix(index.stems[s].size(), std::vector<CueDistances>(index.stems[s].size(), CueDistances{})));
       continue;
@@ -143,7 +134,7 @@ StudyFitInputs read_study_fit_inputs(const StudyFitRequest& request) {
       in.interrupted = true;
       return in;
     }
-    append(in.diagnostics, std::move(r.diagnostics));
+    append_diagnostics(in.diagnostics, std::move(r.diagnostics));
     if (!r.ok()) return in;
     data.set_cues.push_back(std::move(r.cues));
   }

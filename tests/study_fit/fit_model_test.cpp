@@ -115,7 +115,7 @@ TEST(FitModel, RecoversKnownConstantsWithinTheirIntervalsAndBeatsTheDefaultsHeld
   FitData d = two_sets();
   const DiscriminationConstants truth = known_truth();
   simulate(d, truth, 6, 30, 2026);
-  ASSERT_FALSE(fit_refusal(d, {}));
+  ASSERT_FALSE(fit_refusal(d));
   const ModelFit fit = fit_discrimination_model(d, {});
   EXPECT_TRUE(fit.warnings.empty()) << fit.warnings.front();
   for (std::size_t k = 0; k < kFitConstantCount; ++k) {
@@ -211,20 +211,20 @@ TEST(FitModel, AlwaysRightAnswersCannotBoundTheWeightsFromAboveSoTheyKeepTheirDe
 
 TEST(FitModel, RefusesNoTrialsOneParticipantAndTooFewTrials) {
   FitData none = two_sets();
-  ASSERT_TRUE(fit_refusal(none, {}));
-  EXPECT_NE(fit_refusal(none, {})->find("no trials"), std::string::npos);
+  ASSERT_TRUE(fit_refusal(none));
+  EXPECT_NE(fit_refusal(none)->find("no trials"), std::string::npos);
   FitData one = two_sets();
   simulate(one, known_truth(), 1, 10, 1);
-  ASSERT_TRUE(fit_refusal(one, {}));
-  EXPECT_NE(fit_refusal(one, {})->find("one participant only (P1)"), std::string::npos) << *fit_refusal(one, {});
+  ASSERT_TRUE(fit_refusal(one));
+  EXPECT_NE(fit_refusal(one)->find("one participant only (P1)"), std::string::npos) << *fit_refusal(one);
   FitData few = two_sets();
   simulate(few, known_truth(), 2, 2, 1);  // 32 trials for 4 free constants
-  ASSERT_TRUE(fit_refusal(few, {}));
-  EXPECT_NE(fit_refusal(few, {})->find("32 trials for 4 free constants: at least 10 trials per constant (40)"), std::string::npos)
-      << *fit_refusal(few, {});
+  ASSERT_TRUE(fit_refusal(few));
+  EXPECT_NE(fit_refusal(few)->find("32 trials for 4 free constants: at least 10 trials per constant (40)"), std::string::npos)
+      << *fit_refusal(few);
   FitData enough = two_sets();
   simulate(enough, known_truth(), 2, 3, 1);  // 48
-  EXPECT_FALSE(fit_refusal(enough, {}));
+  EXPECT_FALSE(fit_refusal(enough));
 }
 
 }  // namespace
