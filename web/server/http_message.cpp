@@ -25,14 +25,14 @@ const char* reason_of(int status) {
   }
 }
 
+}  // namespace
+
 int hex_digit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
   if (c >= 'a' && c <= 'f') return c - 'a' + 10;
   if (c >= 'A' && c <= 'F') return c - 'A' + 10;
   return -1;
 }
-
-}  // namespace
 
 HttpReply text_reply(int status, const std::string& text) {
   HttpReply reply;

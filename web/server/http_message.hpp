@@ -57,6 +57,9 @@ std::string format_reply_head(const HttpReply& reply, std::size_t body_bytes);
 // One chunk of a chunked body ("" ends the body).
 std::string format_chunk(std::string_view data);
 
+// The value of a hexadecimal digit (either case), -1 for any other character.
+int hex_digit(char c);
+
 // %XX decoded (a bad escape stays as it is); '+' is not a space in a path.
 std::string percent_decode_path(std::string_view text);
 // The path and query of a request target.
