@@ -6,6 +6,7 @@
 #include "storage/json_checker.hpp"
 #include "storage/json_reader.hpp"
 #include "storage/load_file.hpp"
+#include "storage/number_text.hpp"
 
 namespace vimg {
 
@@ -40,20 +41,14 @@ const JsonValue* find_member(JsonChecker& check, const JsonValue& object, std::s
   return v;
 }
 
-std::string trimmed(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
-
 // A number of `v` within (low or [low, high]; high may be infinite).
 bool in_range(JsonChecker& check, const JsonValue& v, const std::string& what, double low, bool low_open, double high, double& out) {
   if (!check.expect(v, JsonValue::Kind::number, what)) return false;
   const double x = v.number;
   const bool above = low_open ? x > low : x >= low;
   if (!(above && x <= high))
-    return check.fail(v.line, what + " must be " + (low_open ? "> " : ">= ") + trimmed(low) +
-                                  (std::isinf(high) ? std::string() : " and <= " + trimmed(high)));
+    return check.fail(v.line, what + " must be " + (low_open ? "> " : ">= ") + format_decimal(low) +
+                                  (std::isinf(high) ? std::string() : " and <= " + format_decimal(high)));
   out = x;
   return true;
 }
