@@ -16,9 +16,11 @@ var VimgAudioClock = (function () {
   // A pairing older than this (a context that stalled or has not started) is not extrapolated.
   var kStalePairingMs = 250;
 
-  function pairingUsable(r) {
-    return r.contextTime > 0 && r.performanceTime > 0 && Math.abs(r.nowMs - r.performanceTime) <= kStalePairingMs;
+  // A reading's pairing, judged by its age at nowMs.
+  function pairingUsableAt(r, nowMs) {
+    return r.contextTime > 0 && r.performanceTime > 0 && Math.abs(nowMs - r.performanceTime) <= kStalePairingMs;
   }
+  function pairingUsable(r) { return pairingUsableAt(r, r.nowMs); }
 
   // The context time (s) of the sample heard at timeStampMs, from the output's pairing of the two
   // clocks; NaN without a usable pairing.
@@ -49,8 +51,9 @@ var VimgAudioClock = (function () {
   // no reading has a usable pairing.
   var kLocalMs = 50;
   function steadyReading(readings, timeStampMs) {
-    var usable = readings.filter(pairingUsableFrom(readings[readings.length - 1]));
     var newest = readings[readings.length - 1];
+    // A pairing is judged by its age at the newest reading.
+    var usable = readings.filter(function (r) { return pairingUsableAt(r, newest.nowMs); });
     if (usable.length === 0) return newest;
     // One pairing per audio callback: readings taken within one callback repeat it, and count once.
     var local = usable.filter(function (r, i) {
@@ -66,12 +69,6 @@ var VimgAudioClock = (function () {
     var median = sorted[(sorted.length - 1) >> 1];
     return { nowMs: newest.nowMs, currentTime: newest.currentTime, latencyS: newest.latencyS,
              contextTime: median.contextTime, performanceTime: median.performanceTime };
-  }
-  // A pairing is judged by its age at the newest reading.
-  function pairingUsableFrom(newest) {
-    return function (r) {
-      return r.contextTime > 0 && r.performanceTime > 0 && Math.abs(newest.nowMs - r.performanceTime) <= kStalePairingMs;
-    };
   }
 
   return { eventTimeS: eventTimeS, heardContextTimeS: heardContextTimeS, heardAtMs: heardAtMs, steadyReading: steadyReading,
