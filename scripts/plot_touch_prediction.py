@@ -33,7 +33,7 @@ def svg(rows):
     width, height, pad = 260, 220, 40
     tasks = list(rows)
     top = max(v for task in tasks for _, values in rows[task] for v in values)
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width * len(tasks)}" height="{height + 40}" '
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width * len(tasks)}" height="{height + 60}" '
            'font-family="DejaVu Sans, sans-serif" font-size="11">',
            f'<rect width="100%" height="100%" fill="white"/>']
     for i, task in enumerate(tasks):
@@ -57,7 +57,7 @@ def svg(rows):
         x = pad + a * 130
         out.append(f'<line x1="{x}" y1="{height + 25}" x2="{x + 20}" y2="{height + 25}" stroke="{colour}" stroke-width="2"/>')
         out.append(f'<text x="{x + 25}" y="{height + 29}">{name}</text>')
-    out.append(f'<text x="{pad + 4 * 130}" y="{height + 29}">mean error, px (12.72 px/mm; in sample)</text>')
+    out.append(f'<text x="{pad}" y="{height + 49}">mean error, px (12.72 px/mm; in sample)</text>')
     out.append("</svg>")
     return "\n".join(out) + "\n"
 
