@@ -98,6 +98,14 @@ def read_wav(path):
     return rate, samples
 
 
+def driven_samples(path, samples):
+    """The indices of the samples where the drive is on (|d| > 1e-3); fails when it is silent."""
+    on = [i for i, v in enumerate(samples) if abs(v) > 1e-3]
+    if not on:
+        fail(f"{path}: the drive is silent")
+    return on
+
+
 def read_gesture(path):
     rows = []
     for line in open(path):
@@ -141,9 +149,7 @@ def check_pulse(wav, gesture, cx, cy, r):
     t_in, t_out = spans[0]
     if max(abs(v) for v in d) > 1.0:
         fail(f"{wav}: |d| exceeds 1")
-    on = [i for i, v in enumerate(d) if abs(v) > 1e-3]
-    if not on:
-        fail(f"{wav}: the drive is silent")
+    on = driven_samples(wav, d)
     t_on, t_off = on[0] / rate, on[-1] / rate
     print(f"finger inside the dot {t_in:.4f}..{t_out:.4f} s; drive on {t_on:.4f}..{t_off:.4f} s "
           f"({len(d)} samples at {rate} Hz)")

@@ -21,7 +21,7 @@ later than the first recorded move inside the disc and stops no later than the f
 import statistics
 import sys
 
-from gui_check import fail, read_gesture, read_wav
+from gui_check import driven_samples, fail, read_gesture, read_wav
 
 MARGIN_S = 0.006
 
@@ -78,9 +78,7 @@ def main(argv):
         return next(t for t, x in zip(stamps, xs) if x >= x_edge)
 
     rate, d = read_wav(wav)
-    on = [i for i, v in enumerate(d) if abs(v) > 1e-3]
-    if not on:
-        fail(f"{wav}: the drive is silent")
+    on = driven_samples(wav, d)
     t_on, t_off = on[0] / rate, on[-1] / rate
     print(f"the finger is on the dot {true_crossing(cx - r):.4f}..{true_crossing(cx + r):.4f} s; the drive "
           f"is on {t_on:.4f}..{t_off:.4f} s; horizon {1e3 * horizon_s:.1f} ms")
