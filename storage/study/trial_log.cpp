@@ -12,6 +12,7 @@
 #include <ctime>
 #include <utility>
 
+#include "storage/diagnostic.hpp"
 #include "storage/limits.hpp"
 #include "storage/read_file.hpp"
 #include "storage/study/trial_table.hpp"
@@ -204,7 +205,7 @@ std::variant<TrialLog, std::vector<Diagnostic>> TrialLog::open(const fs::path& d
       if (const auto sync = sync_folder(dir)) return failed(*sync);
       DiagnosticList note(path.string());
       note.warning(0, "--restart: the earlier trials are kept aside in " + std::get<fs::path>(aside).string());
-      for (auto& d : note.take()) warnings.push_back(std::move(d));
+      append_diagnostics(warnings, note.take());
       fd = -1;
     }
   }
@@ -246,7 +247,7 @@ std::variant<TrialLog, std::vector<Diagnostic>> TrialLog::open(const fs::path& d
       ::close(fd);
       return failed(problem);
     }
-    for (auto& d : existing->warnings) warnings.push_back(std::move(d));
+    append_diagnostics(warnings, std::move(existing->warnings));
     return TrialLog(fd, path, participant, trial_column, header.size(), options.total_trials, existing->rows, size,
                     std::move(warnings));
   }

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <optional>
 
+#include "storage/diagnostic.hpp"
 #include "storage/limits.hpp"
 #include "storage/load_file.hpp"
 #include "storage/named_file.hpp"
@@ -344,7 +345,7 @@ VolumeSceneLoadResult load_volume_scene_text(std::string_view text, const std::f
     nrrd_options.named = named;
     nrrd_options.what_folder = "the folder of " + data.path.filename().string();
     NrrdLoadResult nrrd = parse_nrrd(*data.read.bytes, data.path.string(), nrrd_options);
-    for (auto& d : nrrd.diagnostics) data_diagnostics.push_back(std::move(d));
+    append_diagnostics(data_diagnostics, std::move(nrrd.diagnostics));
     if (!nrrd.ok()) {
       list.error(ref.source_line, "cannot load data '" + escape_input(ref.id) + "' from " + data.path.string());
       continue;
@@ -367,7 +368,7 @@ VolumeSceneLoadResult load_volume_scene_text(std::string_view text, const std::f
   }
   const bool failed = list.has_errors() || has_errors(data_diagnostics);
   result.diagnostics = list.take();
-  for (auto& d : data_diagnostics) result.diagnostics.push_back(std::move(d));
+  append_diagnostics(result.diagnostics, std::move(data_diagnostics));
   if (!failed) result.loaded = std::move(loaded);
   return result;
 }

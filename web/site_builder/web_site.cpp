@@ -9,6 +9,7 @@
 
 #include "storage/actuator_profile.hpp"
 #include "storage/atomic_file.hpp"
+#include "storage/diagnostic.hpp"
 #include "storage/image_io.hpp"
 #include "storage/read_file.hpp"
 #include "storage/vsc/vsc_image.hpp"
@@ -64,7 +65,7 @@ bool write_image(const std::filesystem::path& image, const ResponseParams& respo
                  std::vector<Diagnostic>& out) {
   LoadResult loaded = load_image_file(image);
   const bool ok = loaded.ok();
-  for (Diagnostic& d : loaded.diagnostics) out.push_back(std::move(d));
+  append_diagnostics(out, std::move(loaded.diagnostics));
   if (!ok) return false;
   const std::string bytes = write_vsc({*loaded.image, response});
   // What the page will read must read: a name or an id beyond the .vsc limits is said here.
