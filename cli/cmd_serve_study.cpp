@@ -88,6 +88,7 @@ int run_serve_study(const StudyServeArgs& a, const sigset_t& stop_signals) {
   options.port = a.port;
   options.api = [&service](const web::ApiRequest& request) { return service.handle(request); };
   options.api_post_paths = web::StudyService::post_paths();
+  options.api_files_held = [&service] { return service.open_trial_files(); };
   if (!a.tls.empty()) {
     options.tls_cert_pem = a.tls[0];
     options.tls_key_pem = a.tls[1];

@@ -28,10 +28,11 @@ void EventBroadcaster::publish(std::string message) {
   changed_.notify_all();
 }
 
-std::int64_t EventBroadcaster::open_stream() {
+std::int64_t EventBroadcaster::open_stream(std::optional<std::int64_t> last_event_id) {
   const std::lock_guard lock(mutex_);
   if (closed_ || open_streams_ >= kMaxEventStreams) return -1;
   ++open_streams_;
+  if (last_event_id && *last_event_id >= 0 && *last_event_id <= published_) return *last_event_id;
   return published_;
 }
 
@@ -50,7 +51,7 @@ EventBroadcaster::Wait EventBroadcaster::wait_after(std::int64_t& cursor, std::c
   }
   const std::int64_t oldest_kept = published_ - static_cast<std::int64_t>(kept_.size());
   for (std::int64_t n = std::max(cursor, oldest_kept); n < published_; ++n) {
-    wait.text += kept_[static_cast<std::size_t>(n - oldest_kept)];
+    wait.text += "id: " + std::to_string(n + 1) + "\n" + kept_[static_cast<std::size_t>(n - oldest_kept)];
   }
   cursor = published_;
   return wait;

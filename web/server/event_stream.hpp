@@ -3,13 +3,16 @@
 // "event: image\ndata: NAME\n\n" each time an image of the site was rewritten, so the page fetches
 // images/NAME.vsc again. One EventBroadcaster is shared by every open stream: publish() appends a
 // message and wakes them all; each stream keeps a cursor (the number of messages it has sent) and
-// waits for the ones after it. Only the last kKeptEventMessages are kept: a stream that fell
-// further behind gets those (the page reloads the same images either way).
+// waits for the ones after it. Each message goes out with its number ("id: N", counting from 1), so
+// a page whose stream ended (its lifetime, a lost network) reopens it with Last-Event-ID: N and
+// gets what it missed. Only the last kKeptEventMessages are kept: a stream that fell further
+// behind gets those (the page reloads the same images either way).
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -18,7 +21,8 @@ namespace vimg::web {
 inline constexpr std::size_t kKeptEventMessages = 256;
 // How often an idle stream sends a comment, so that a page that has gone is noticed.
 inline constexpr std::chrono::seconds kEventKeepAlive{15};
-// At most this many pages listen at once; a further /events gets 503.
+// At most this many pages listen at once; a further /events gets only a retry hint
+// (kEventStreamFullRetry) and its page tries again then.
 inline constexpr int kMaxEventStreams = 8;
 
 // "event: EVENT\ndata: LINE\n...\n\n": every line of `data` in a data field of its own, as the
@@ -31,12 +35,13 @@ class EventBroadcaster {
   void publish(std::string message);
 
   // Opens one more stream if fewer than kMaxEventStreams are open; returns its cursor (every
-  // message published after this call reaches it), or -1 when full or closed.
-  std::int64_t open_stream();
+  // message published after this call reaches it, or after message `last_event_id` when that is
+  // one this broadcaster has published), or -1 when full or closed.
+  std::int64_t open_stream(std::optional<std::int64_t> last_event_id = std::nullopt);
   void close_stream();
 
   struct Wait {
-    std::string text;     // the messages after the cursor, concatenated; empty after a timeout
+    std::string text;     // the messages after the cursor with their ids, concatenated; empty after a timeout
     bool closed = false;  // the broadcaster was closed: the stream must end
   };
   // Blocks until a message after `cursor` exists (returns them all and moves the cursor), the

@@ -1,72 +1,71 @@
 #pragma once
 // One connection of the HTTP engine (web/server/http_engine.hpp), over plain TCP or TLS: included by
 // http_engine.cpp only (Beast's templates are compiled there and nowhere else). Everything here runs
-// on the network thread, except respond(), which a worker runs and whose reply is posted back.
-//   connect -> [TLS handshake] -> header (kHeaderDeadline) -> refuse? -> body (kBodyDeadline)
-//   -> respond on a worker -> reply -> keep-alive: header again | close | event stream
-#include <boost/asio/io_context.hpp>
-#include <boost/asio/ip/tcp.hpp>
+// on the network thread, except the route, which a worker runs and whose reply is posted back.
+//   connect -> [TLS handshake] -> header (header deadline) -> refuse? -> body (body deadline)
+//   -> route on a worker (dropped if the client goes meanwhile) -> reply (write deadline)
+//   -> keep-alive: header again | close | event stream (until its lifetime ends)
+#include <sys/socket.h>
+
 #include <boost/asio/post.hpp>
-#include <boost/asio/ssl.hpp>
-#include <boost/asio/steady_timer.hpp>
-#include <boost/asio/thread_pool.hpp>
 #include <boost/asio/write.hpp>
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/beast/core/string.hpp>
-#include <boost/beast/core/tcp_stream.hpp>
 #include <boost/beast/http/error.hpp>
 #include <boost/beast/http/parser.hpp>
 #include <boost/beast/http/read.hpp>
 #include <boost/beast/http/string_body.hpp>
 #include <array>
+#include <cerrno>
 #include <limits>
-#include <memory>
-#include <optional>
 #include <string>
 #include <type_traits>
-#include <unordered_map>
 
-#include "web/server/http_engine.hpp"
+#include "web/server/engine_state.hpp"
+#include "web/server/event_stream_writer.hpp"
 
 namespace vimg::web {
 
-namespace net = boost::asio;
-namespace beast = boost::beast;
 namespace http = beast::http;
-using tcp = net::ip::tcp;
 using TlsStream = net::ssl::stream<beast::tcp_stream>;
 
 // Room for the whole header, the largest body and a pipelined request's start.
 inline constexpr std::size_t kMaxBufferedBytes = 32768;
 
-class Connection {
- public:
-  virtual ~Connection() = default;
-  virtual void start() = 0;
-  virtual void abort() = 0;           // closes the socket now
-  virtual void events_changed() = 0;  // an event stream sends what is new
-};
+// The route, on a worker: its reply, or 500 when it throws (`failure` then says what).
+inline HttpReply run_route(const HttpRoutes& routes, const HttpRequest& request, std::string& failure) {
+  try {
+    return routes.respond(request);
+  } catch (const std::exception& e) {
+    failure = e.what();
+  } catch (...) {
+    failure = "an exception that is not a std::exception";
+  }
+  return text_reply(500, "the server could not answer this request (its log says why)");
+}
 
-// What every connection shares; touched on the network thread only (the pool is thread-safe).
-struct EngineState {
-  HttpRoutes routes;
-  net::io_context io{1};
-  std::optional<net::thread_pool> pool;
-  std::unordered_map<Connection*, std::weak_ptr<Connection>> open;
-  int max_connections = kMaxConnections;
-  bool stopping = false;
-};
+// The request's framing is one the server will read: a single Content-Length, or chunked alone.
+// Anything else (both, a length twice, a list of lengths, another transfer coding) could be read
+// differently by a proxy in front, so it is refused with 400.
+inline bool unambiguous_framing(const http::request_parser<http::string_body>::value_type& head) {
+  const auto lengths = head.count(http::field::content_length);
+  const auto codings = head.count(http::field::transfer_encoding);
+  if (lengths > 1 || codings > 1 || (lengths == 1 && codings == 1)) return false;
+  if (lengths == 1 && head[http::field::content_length].find(',') != beast::string_view::npos) return false;
+  return codings == 0 || beast::iequals(head[http::field::transfer_encoding], "chunked");
+}
 
 template <class Stream>
 class Session final : public Connection, public std::enable_shared_from_this<Session<Stream>> {
   static constexpr bool kTls = std::is_same_v<Stream, TlsStream>;
 
  public:
-  Session(EngineState& engine, Stream stream) : engine_(engine), stream_(std::move(stream)), keep_alive_timer_(engine.io) {}
+  Session(EngineState& engine, Stream stream)
+      : engine_(engine), stream_(std::move(stream)), events_(engine.io) {}
 
   void start() override {
     if constexpr (kTls) {
-      tcp_layer().expires_after(kTlsHandshakeDeadline);
+      tcp_layer().expires_after(engine_.limits().tls_handshake_deadline);
       stream_.async_handshake(net::ssl::stream_base::server, [self = this->shared_from_this()](beast::error_code ec) {
         if (ec) return self->finish();
         self->read_header();
@@ -78,15 +77,14 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
 
   void abort() override { finish(); }
 
+  void stop_gracefully() override {
+    if (in_flight_) return;  // send() closes after the reply (the engine is stopping)
+    finish();
+  }
+
   void events_changed() override {
-    if (!stream_open_ || finished_) return;
-    const EventBroadcaster::Wait wait = engine_.routes.events->wait_after(cursor_, std::chrono::milliseconds(0));
-    if (wait.closed) {
-      outbox_ += format_chunk("");
-      ending_ = true;
-    } else if (!wait.text.empty()) {
-      outbox_ += format_chunk(wait.text);
-    }
+    if (finished_ || !events_.open()) return;
+    events_.changed(*engine_.routes.events);
     flush_stream();
   }
 
@@ -105,7 +103,8 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     // empty limit as greater, so "no limit" is the largest one.)
     parser_->body_limit(std::numeric_limits<std::uint64_t>::max());
     request_ = HttpRequest{};
-    tcp_layer().expires_after(kHeaderDeadline);
+    // One deadline for the whole header, however its bytes trickle (not one per read).
+    tcp_layer().expires_after(engine_.limits().header_deadline);
     http::async_read_header(stream_, buffer_, *parser_, [self = this->shared_from_this()](beast::error_code ec, std::size_t) {
       self->on_header(ec);
     });
@@ -136,25 +135,28 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
         return send(text_reply(400, "header line too long"), true);
       }
     }
+    if (!unambiguous_framing(head)) {
+      return send(text_reply(400, "bad request: one Content-Length, or Transfer-Encoding: chunked alone"), true);
+    }
     request_.host = std::string(head[http::field::host]);
     request_.origin = std::string(head[http::field::origin]);
     request_.key = std::string(head["X-Vimg-Key"]);
     request_.content_type = std::string(head[http::field::content_type]);
+    request_.last_event_id = std::string(head["Last-Event-ID"]);
     if (auto refusal = engine_.routes.refuse(request_)) return send(std::move(*refusal), true);
     parser_->body_limit(engine_.routes.max_body_bytes);
     if (parser_->content_length() && *parser_->content_length() > engine_.routes.max_body_bytes) {
       return send(text_reply(413, "payload too large"), true);
     }
     if (parser_->is_done()) return dispatch();
+    tcp_layer().expires_after(engine_.limits().body_deadline);
     if (beast::iequals(head[http::field::expect], "100-continue")) {
       continue_ = "HTTP/1.1 100 Continue\r\n\r\n";
-      tcp_layer().expires_after(kBodyDeadline);
       return net::async_write(stream_, net::buffer(continue_), [self = this->shared_from_this()](beast::error_code e, std::size_t) {
         if (e) return self->finish();
         self->read_body();
       });
     }
-    tcp_layer().expires_after(kBodyDeadline);
     read_body();
   }
 
@@ -169,15 +171,46 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     });
   }
 
-  // The route runs on a worker; the reply comes back to this thread.
+  // The route runs on a worker of its queue; the reply comes back to this thread. Meanwhile the
+  // socket is watched: a client that closes (or half-closes) is dropped and its route not run.
   void dispatch() {
     tcp_layer().expires_never();
-    net::post(*engine_.pool, [self = this->shared_from_this()]() mutable {
-      HttpReply reply = self->engine_.routes.respond(self->request_);
+    in_flight_ = true;
+    watch_for_departure();
+    net::thread_pool& pool = request_.method == "POST" ? *engine_.write_pool : *engine_.read_pool;
+    net::post(pool, [self = this->shared_from_this()]() mutable {
+      HttpReply reply;
+      std::string failure;
+      if (self->departed_.load()) {
+        ++self->engine_.counts.routes_dropped;
+      } else {
+        reply = run_route(self->engine_.routes, self->request_, failure);
+      }
       EngineState& engine = self->engine_;
-      net::post(engine.io, [self = std::move(self), reply = std::move(reply)]() mutable {
+      net::post(engine.io, [self = std::move(self), reply = std::move(reply), failure = std::move(failure)]() mutable {
+        self->in_flight_ = false;
+        beast::error_code ignored;
+        self->tcp_layer().socket().cancel(ignored);  // the watch
+        if (!failure.empty()) {
+          ++self->engine_.counts.routes_failed;
+          if (self->engine_.routes.log_failure) self->engine_.routes.log_failure(self->request_, failure);
+        }
         self->send(std::move(reply), false);
       });
+    });
+  }
+
+  // Readable while the route runs: the peer's FIN (recv peeks 0) or an error means it has gone; a
+  // pipelined request's bytes stay where they are for the next read.
+  void watch_for_departure() {
+    tcp_layer().socket().async_wait(tcp::socket::wait_read, [self = this->shared_from_this()](beast::error_code ec) {
+      if (ec || self->finished_ || !self->in_flight_) return;
+      char byte = 0;
+      const ssize_t n = ::recv(self->tcp_layer().socket().native_handle(), &byte, 1, MSG_PEEK | MSG_DONTWAIT);
+      if (n > 0) return;
+      if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) return self->watch_for_departure();
+      self->departed_ = true;
+      self->finish();
     });
   }
 
@@ -190,59 +223,54 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
       reply.close = true;
     }
     engine_.routes.log(request_, reply);
-    holds_stream_ = reply.event_stream;
-    cursor_ = reply.stream_cursor;
-    head_ = format_reply_head(reply, reply.body.size());
+    const bool head_only = request_.method == "HEAD" || reply.head_only_bytes.has_value();
+    head_ = format_reply_head(reply, reply.content_length());
     if (reply.event_stream) {
       head_ += format_chunk(reply.body);
-      body_.clear();
+      events_.opened(reply.stream_cursor);
+      reply_ = HttpReply{};
     } else {
-      body_ = request_.method == "HEAD" ? std::string() : std::move(reply.body);
+      reply_ = std::move(reply);  // holds the body (or the file's shared copy) until written
+      if (head_only) {
+        reply_.body.clear();
+        reply_.shared_body.reset();
+      }
     }
-    tcp_layer().expires_after(write_deadline(head_.size() + body_.size()));
-    const std::array<net::const_buffer, 2> buffers{net::buffer(head_), net::buffer(body_)};
-    net::async_write(stream_, buffers,
-                     [self = this->shared_from_this(), close = reply.close, stream = reply.event_stream](beast::error_code ec, std::size_t) {
-                       if (ec || self->finished_) return self->finish();
-                       if (stream) return self->open_stream();
-                       if (close) return self->close_gracefully();
-                       self->read_header();
-                     });
+    const std::string_view body = reply_.body_bytes();
+    tcp_layer().expires_after(write_deadline(engine_.limits(), head_.size() + body.size()));
+    const std::array<net::const_buffer, 2> buffers{net::buffer(head_), net::buffer(body.data(), body.size())};
+    net::async_write(stream_, buffers, [self = this->shared_from_this()](beast::error_code ec, std::size_t) {
+      self->reply_.shared_body.reset();  // the file's copy leaves the reply budget once written
+      self->reply_.body.clear();
+      if (ec || self->finished_) return self->finish();
+      if (self->events_.open()) return self->open_stream();
+      if (self->reply_.close) return self->close_gracefully();
+      self->read_header();
+    });
   }
 
   void open_stream() {
     head_.clear();
-    stream_open_ = true;
-    // A page that closes its stream is noticed at once (its slot of kMaxEventStreams freed), not at
-    // the next keep-alive comment: a read stays pending, untimed (a write's deadline is its own).
+    // A page that closes its stream is noticed at once (its place among kMaxEventStreams freed),
+    // not at the next keep-alive comment: a read stays pending, untimed (a write's deadline is its own).
     tcp_layer().expires_never();
     stream_.async_read_some(net::buffer(scratch_), [self = this->shared_from_this()](beast::error_code, std::size_t) {
       self->finish();
     });
-    arm_keep_alive();
+    events_.arm(engine_.limits().event_stream_lifetime, [self = this->shared_from_this()] { self->flush_stream(); });
     events_changed();  // what was published while the greeting was written
-  }
-
-  void arm_keep_alive() {
-    keep_alive_timer_.expires_after(kEventKeepAlive);
-    keep_alive_timer_.async_wait([self = this->shared_from_this()](beast::error_code ec) {
-      if (ec || self->finished_) return;
-      if (!self->writing_ && self->outbox_.empty()) self->outbox_ = format_chunk(": keep-alive\n\n");
-      self->flush_stream();
-      self->arm_keep_alive();
-    });
   }
 
   void flush_stream() {
     if (writing_ || finished_) return;
-    if (outbox_.empty()) {
-      if (ending_) finish();  // the last chunk is out (the read pending rules out a graceful drain)
+    std::string next = events_.take();
+    if (next.empty()) {
+      if (events_.ended()) finish();  // the last chunk is out (the read pending rules out a graceful drain)
       return;
     }
     writing_ = true;
-    sending_ = std::move(outbox_);
-    outbox_.clear();
-    tcp_layer().expires_after(kWriteDeadline);
+    sending_ = std::move(next);
+    tcp_layer().expires_after(engine_.limits().write_deadline);
     net::async_write(stream_, net::buffer(sending_), [self = this->shared_from_this()](beast::error_code ec, std::size_t) {
       self->writing_ = false;
       if (ec) return self->finish();
@@ -251,10 +279,10 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
   }
 
   // The reply is out; the peer's last bytes are read (closing with them unread would reset the
-  // connection and could lose the reply), for kClosingDeadline at most.
+  // connection and could lose the reply), for the closing deadline at most.
   void close_gracefully() {
     if (finished_) return;
-    tcp_layer().expires_after(kClosingDeadline);
+    tcp_layer().expires_after(engine_.limits().closing_deadline);
     if constexpr (kTls) {
       stream_.async_shutdown([self = this->shared_from_this()](beast::error_code) { self->finish(); });
     } else {
@@ -274,12 +302,10 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
   void finish() {
     if (finished_) return;
     finished_ = true;
-    stream_open_ = false;
-    keep_alive_timer_.cancel();
     tcp_layer().close();
-    if (holds_stream_) engine_.routes.events->close_stream();
-    holds_stream_ = false;
-    engine_.open.erase(this);
+    events_.close(engine_.routes.events);
+    reply_.shared_body.reset();
+    engine_.closed(this, false);
   }
 
   EngineState& engine_;
@@ -287,14 +313,12 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
   beast::flat_buffer buffer_{kMaxBufferedBytes};
   std::optional<http::request_parser<http::string_body>> parser_;
   HttpRequest request_;
-  std::string head_, body_, continue_;
+  HttpReply reply_;  // being written
+  std::string head_, continue_, sending_;
   std::array<char, 512> scratch_{};
-  // An event stream: its cursor, what waits to be sent, what is being sent.
-  net::steady_timer keep_alive_timer_;
-  std::int64_t cursor_ = 0;
-  std::string outbox_, sending_;
-  bool holds_stream_ = false, stream_open_ = false, writing_ = false, ending_ = false;
-  bool finished_ = false;
+  EventStreamWriter events_;
+  std::atomic<bool> departed_{false};  // set here, read by the worker about to run the route
+  bool in_flight_ = false, writing_ = false, finished_ = false;
 };
 
 }  // namespace vimg::web

@@ -1,59 +1,19 @@
 #include "web/server/http_engine.hpp"
 
-#include <sys/resource.h>
-
-#include <algorithm>
-#include <atomic>
 #include <boost/asio/executor_work_guard.hpp>
-#include <boost/asio/io_context.hpp>
-#include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/post.hpp>
-#include <boost/asio/ssl.hpp>
-#include <boost/asio/steady_timer.hpp>
-#include <boost/asio/thread_pool.hpp>
+#include <boost/beast/core/error.hpp>
+#include <cstdio>
+#include <exception>
 #include <future>
 #include <thread>
-#include <unordered_map>
+#include <vector>
 
+#include "web/server/busy_refusal.hpp"
+#include "web/server/descriptor_budget.hpp"
 #include "web/server/http_connection.hpp"
 
 namespace vimg::web {
-
-namespace {
-
-// Raises the soft limit of open descriptors to the hard one; the connections the limit then allows
-// (a few descriptors are kept for files, the watcher and the log).
-int connections_the_descriptors_allow() {
-  rlimit limit{};
-  if (getrlimit(RLIMIT_NOFILE, &limit) != 0) return kMaxConnections;
-  if (limit.rlim_cur < limit.rlim_max) {
-    limit.rlim_cur = limit.rlim_max;
-    setrlimit(RLIMIT_NOFILE, &limit);
-    getrlimit(RLIMIT_NOFILE, &limit);
-  }
-  constexpr rlim_t kKeptDescriptors = 64;
-  if (limit.rlim_cur == RLIM_INFINITY || limit.rlim_cur >= kMaxConnections + kKeptDescriptors) return kMaxConnections;
-  return std::max(16, static_cast<int>(limit.rlim_cur) - static_cast<int>(kKeptDescriptors));
-}
-
-// A connection beyond the limit: a 503 if the socket takes it at once (it always has room for a few
-// bytes), then closed. Never waited for.
-void refuse_busy(tcp::socket& socket, bool tls) {
-  beast::error_code ec;
-  if (!tls) {
-    static const std::string kBusy = [] {
-      HttpReply reply = text_reply(503, "the server is busy (too many connections); try again");
-      reply.close = true;
-      return format_reply_head(reply, reply.body.size()) + reply.body;
-    }();
-    socket.non_blocking(true, ec);
-    socket.write_some(net::buffer(kBusy), ec);
-    socket.shutdown(tcp::socket::shutdown_send, ec);
-  }
-  socket.close(ec);
-}
-
-}  // namespace
 
 struct HttpEngine::Impl {
   explicit Impl(HttpRoutes routes) { state.routes = std::move(routes); }
@@ -76,20 +36,50 @@ struct HttpEngine::Impl {
         });
         return;
       }
-      if (static_cast<int>(state.open.size()) >= state.max_connections) {
-        refuse_busy(socket, tls.has_value());
-      } else {
-        std::shared_ptr<Connection> connection;
-        if (tls) {
-          connection = std::make_shared<Session<TlsStream>>(state, TlsStream(beast::tcp_stream(std::move(socket)), *tls));
-        } else {
-          connection = std::make_shared<Session<beast::tcp_stream>>(state, beast::tcp_stream(std::move(socket)));
-        }
-        state.open.emplace(connection.get(), connection);
-        connection->start();
-      }
+      admit(std::move(socket));
       accept();
     });
+  }
+
+  void admit(tcp::socket socket) {
+    const DescriptorUse use{state.connections, state.refusing, state.routes.files_held ? state.routes.files_held() : 0};
+    Admission admission = admit_connection(use, state.limits().max_connections, state.descriptor_limit);
+    if (admission == Admission::refuse_busy && tls) admission = Admission::close;
+    std::shared_ptr<Connection> connection;
+    if (admission == Admission::serve) {
+      if (tls) {
+        connection = std::make_shared<Session<TlsStream>>(state, TlsStream(beast::tcp_stream(std::move(socket)), *tls));
+      } else {
+        connection = std::make_shared<Session<beast::tcp_stream>>(state, beast::tcp_stream(std::move(socket)));
+      }
+      ++state.connections;
+      state.counts.open_connections = state.connections;
+    } else if (admission == Admission::refuse_busy) {
+      connection = std::make_shared<BusyRefusal>(state, std::move(socket));
+      ++state.refusing;
+      ++state.counts.refused_busy;
+    } else {
+      ++state.counts.closed_unanswered;
+      beast::error_code ignored;
+      socket.close(ignored);
+      return;
+    }
+    state.open.emplace(connection.get(), connection);
+    connection->start();
+  }
+
+  // The network thread. A handler that throws (bad_alloc, say) is logged and the loop goes on.
+  void run_network() {
+    for (;;) {
+      try {
+        state.io.run();
+        return;
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "vimg serve: the network thread caught: %s\n", e.what());
+      } catch (...) {
+        std::fprintf(stderr, "vimg serve: the network thread caught an unknown exception\n");
+      }
+    }
   }
 
   std::optional<std::string> read_tls(const HttpEndpoint& endpoint) {
@@ -124,6 +114,30 @@ struct HttpEngine::Impl {
     port = acceptor->local_endpoint().port();
     return std::nullopt;
   }
+
+  // On the network thread: no more connections; the idle ones close, those with a route under way
+  // send its reply first, until the grace deadline.
+  void begin_stop() {
+    state.stopping = true;
+    beast::error_code ec;
+    acceptor->close(ec);
+    retry_accept->cancel();
+    state.stop_deadline.emplace(state.io);
+    state.stop_deadline->expires_after(state.limits().stop_grace_deadline);
+    state.stop_deadline->async_wait([this](beast::error_code wait_ec) {
+      if (!wait_ec) for (const auto& connection : open_connections()) connection->abort();
+    });
+    for (const auto& connection : open_connections()) connection->stop_gracefully();
+    if (state.open.empty()) state.stop_deadline->cancel();
+  }
+
+  std::vector<std::shared_ptr<Connection>> open_connections() const {
+    std::vector<std::shared_ptr<Connection>> open;
+    for (const auto& [raw, weak] : state.open) {
+      if (auto connection = weak.lock()) open.push_back(std::move(connection));
+    }
+    return open;
+  }
 };
 
 HttpEngine::HttpEngine(HttpRoutes routes) : impl_(std::make_unique<Impl>(std::move(routes))) {}
@@ -135,55 +149,62 @@ std::optional<std::string> HttpEngine::start(const HttpEndpoint& endpoint) {
   if (s.running) return "the server is already running";
   if (auto problem = s.read_tls(endpoint)) return problem;
   if (auto problem = s.listen(endpoint)) return problem;
-  s.state.max_connections = connections_the_descriptors_allow();
+  s.state.descriptor_limit = raise_descriptor_limit();
   s.state.stopping = false;
   s.state.io.restart();
-  s.state.pool.emplace(kRouteWorkerThreads);
+  s.state.read_pool.emplace(kRouteWorkerThreads);
+  s.state.write_pool.emplace(kWriteWorkerThreads);
   s.retry_accept.emplace(s.state.io);
   s.work.emplace(s.state.io.get_executor());
   s.accept();
-  s.network = std::thread([&s] { s.state.io.run(); });
+  s.network = std::thread([&s] { s.run_network(); });
   s.running = true;
   return std::nullopt;
 }
 
 int HttpEngine::port() const { return impl_->port; }
 
-int HttpEngine::max_connections() const { return impl_->state.max_connections; }
+int HttpEngine::max_connections() const {
+  return connection_cap(impl_->state.limits().max_connections, impl_->state.descriptor_limit);
+}
+
+HttpEngineCounts HttpEngine::counts() const {
+  const AtomicCounts& c = impl_->state.counts;
+  return {c.open_connections.load(), c.refused_busy.load(), c.closed_unanswered.load(), c.routes_dropped.load(),
+          c.routes_failed.load()};
+}
 
 void HttpEngine::wake_event_streams() {
   Impl& s = *impl_;
   if (!s.running) return;
   net::post(s.state.io, [&s] {
-    for (const auto& [raw, weak] : s.state.open) {
-      if (const auto connection = weak.lock()) connection->events_changed();
-    }
+    for (const auto& connection : s.open_connections()) connection->events_changed();
   });
 }
 
 void HttpEngine::stop() {
   Impl& s = *impl_;
   if (!s.running.exchange(false)) return;
-  std::promise<void> closed;
-  net::post(s.state.io, [&s, &closed] {
-    s.state.stopping = true;
-    beast::error_code ec;
-    s.acceptor->close(ec);
-    s.retry_accept->cancel();
-    std::vector<std::shared_ptr<Connection>> open;
-    for (const auto& [raw, weak] : s.state.open) {
-      if (auto connection = weak.lock()) open.push_back(std::move(connection));
-    }
-    for (const auto& connection : open) connection->abort();
-    closed.set_value();
+  std::promise<void> begun;
+  net::post(s.state.io, [&s, &begun] {
+    s.begin_stop();
+    begun.set_value();
   });
-  closed.get_future().wait();  // no route is handed a request from now on
-  s.state.pool->join();  // the routes under way end (an answer is on disk); their replies are dropped
+  begun.get_future().wait();  // no route is handed a request from now on
+  // The routes under way (an answer being synced) end; their replies are posted to the network
+  // thread, which sends them and then closes (or the grace deadline closes what is left).
+  s.state.read_pool->join();
+  s.state.write_pool->join();
   s.work.reset();
   s.network.join();
-  s.state.pool.reset();
+  s.state.read_pool.reset();
+  s.state.write_pool.reset();
+  s.state.stop_deadline.reset();
   s.acceptor.reset();
   s.retry_accept.reset();
+  s.state.open.clear();
+  s.state.connections = s.state.refusing = 0;
+  s.state.counts.open_connections = 0;
 }
 
 }  // namespace vimg::web

@@ -1,12 +1,19 @@
 #pragma once
 // The network side of the server (web/server/web_server.hpp): event-driven HTTP/1.1 on Boost.Beast
 // and Asio, so that a connection that waits costs a few kilobytes and no thread. One thread runs
-// every socket; the routes run on kRouteWorkerThreads workers and hand their reply back. Each
-// connection is held to the bounds of web/server/http_message.hpp: its header within
-// kHeaderDeadline of connecting (or of its last reply) however slowly it trickles, its body
-// within kBodyDeadline and kMaxRequestBodyBytes, at most kMaxConnections at once (one more is
-// answered 503 and closed at once). There is no bound per address: a lab's participants share one.
-// Beast's templates are compiled in http_engine.cpp only.
+// every socket; the routes run on workers and hand their reply back: the reading routes on
+// kRouteWorkerThreads, the writing ones (POST) on kWriteWorkerThreads of their own, so a slow
+// disk under an answer's fsync stalls no file, state or report. A route is run only while its
+// client is there (a connection whose peer has closed, or half-closed, is dropped with its route
+// not run); a route that throws answers 500 and the failure is logged with the request's path.
+// Each connection is held to HttpLimits (web/server/http_message.hpp): its header within the
+// header deadline of connecting (or of its last reply) however slowly it trickles, its body
+// within the body deadline and max_body_bytes, at most the connection cap at once, shared with the
+// files the routes hold (web/server/descriptor_budget.hpp); one more is answered 503 once its
+// request head is read (web/server/busy_refusal.hpp). There is no bound per address: a lab's
+// participants share one. stop() is graceful: the routes accepted run to their end and their
+// replies are sent, within the stop grace deadline. Beast's templates are compiled in
+// http_engine.cpp only.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -25,8 +32,14 @@ struct HttpRoutes {
   std::function<HttpReply(const HttpRequest&)> respond;
   // On the network thread: every reply sent, or refused before a route saw it.
   std::function<void(const HttpRequest&, const HttpReply&)> log;
+  // On the network thread: a route that threw (the request, what it threw).
+  std::function<void(const HttpRequest&, const std::string&)> log_failure;
+  // From the network thread, at each connection accepted: the files the routes hold open for long
+  // (participants' trial files), which come off the connections' share of the descriptors.
+  std::function<int()> files_held;
   EventBroadcaster* events = nullptr;
   std::size_t max_body_bytes = 0;
+  HttpLimits limits;
 };
 
 struct HttpEndpoint {
@@ -45,10 +58,14 @@ class HttpEngine {
   // Reads the certificate (with TLS), binds and starts the threads; the problem otherwise.
   std::optional<std::string> start(const HttpEndpoint& endpoint);
   int port() const;
+  // The connections served at once with no file held (the limits' cap, lowered to the descriptors').
   int max_connections() const;
+  HttpEngineCounts counts() const;
   // Each open event stream sends what was published since its cursor.
   void wake_event_streams();
-  // Closes the listening socket and every connection, lets the running routes end, joins. Idempotent.
+  // Closes the listening socket, the idle connections and the event streams; the routes under way
+  // run to their end and their replies are sent (within limits.stop_grace_deadline, then every
+  // connection is closed); joins. Idempotent.
   void stop();
 
  private:

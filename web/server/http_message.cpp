@@ -82,8 +82,9 @@ void split_target(const std::string& target, HttpRequest& request) {
   request.query = question == std::string::npos ? std::string() : target.substr(question + 1);
 }
 
-std::chrono::seconds write_deadline(std::size_t bytes) {
-  return kWriteDeadline + std::chrono::seconds(bytes / kWriteBytesPerSecond);
+std::chrono::milliseconds write_deadline(const HttpLimits& limits, std::size_t bytes) {
+  const std::size_t rate = limits.write_bytes_per_second == 0 ? 1 : limits.write_bytes_per_second;
+  return limits.write_deadline + std::chrono::seconds(bytes / rate);
 }
 
 int oversized_header_status(std::string_view received) {

@@ -1,12 +1,19 @@
 #include "web/server/web_server.hpp"
 
 #include <atomic>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <utility>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "storage/read_file.hpp"
 #include "web/server/content_type.hpp"
 #include "web/server/event_stream.hpp"
+#include "web/server/file_copies.hpp"
 #include "web/server/http_engine.hpp"
 #include "web/server/site_path.hpp"
 
@@ -36,13 +43,31 @@ std::string loggable(const std::string& text) {
   return out;
 }
 
+// A file opened for a reply (never blocking, never through a final symbolic link), closed at the end.
+struct OpenFile {
+  explicit OpenFile(const fs::path& path) : fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY | O_NOFOLLOW)) {}
+  ~OpenFile() {
+    if (fd >= 0) ::close(fd);
+  }
+  OpenFile(const OpenFile&) = delete;
+  OpenFile& operator=(const OpenFile&) = delete;
+  int fd;
+};
+
+FileVersion version_of(const struct stat& st) {
+  return {st.st_dev, st.st_ino, static_cast<std::uint64_t>(st.st_size),
+          static_cast<std::int64_t>(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec,
+          static_cast<std::int64_t>(st.st_ctim.tv_sec) * 1000000000 + st.st_ctim.tv_nsec};
+}
+
 }  // namespace
 
 struct WebServer::Impl {
-  explicit Impl(WebServerOptions o) : options(std::move(o)), engine(routes()) {}
+  explicit Impl(WebServerOptions o) : options(std::move(o)), copies(options.limits.reply_budget_bytes), engine(routes()) {}
   WebServerOptions options;
   fs::path site_root;  // canonical
   EventBroadcaster events;
+  FileCopies copies;  // before the engine: the replies it still holds give their bytes back to it
   HttpEngine engine;
   std::atomic<bool> running{false};
 
@@ -51,12 +76,18 @@ struct WebServer::Impl {
     r.refuse = [this](const HttpRequest& request) { return refusal(request); };
     r.respond = [this](const HttpRequest& request) { return respond(request); };
     r.log = [this](const HttpRequest& request, const HttpReply& reply) {
-      const std::size_t bytes = request.method == "HEAD" || reply.event_stream ? 0 : reply.body.size();
+      const std::size_t bytes = request.method == "HEAD" || reply.event_stream ? 0 : reply.body_bytes().size();
       log(loggable(request.method) + " " + loggable(request.path.empty() ? request.target : request.path) + " " +
           std::to_string(reply.status) + " " + std::to_string(bytes));
     };
+    r.log_failure = [this](const HttpRequest& request, const std::string& what) {
+      log(loggable(request.method) + " " + loggable(request.path.empty() ? request.target : request.path) +
+          ": failed: " + loggable(what));
+    };
+    r.files_held = options.api_files_held;
     r.events = &events;
     r.max_body_bytes = kMaxRequestBodyBytes;
+    r.limits = options.limits;
     return r;
   }
 
@@ -80,7 +111,7 @@ struct WebServer::Impl {
 
   HttpReply respond(const HttpRequest& request) {
     if (request.method == "POST") return serve_api(request);
-    if (request.path == "/events") return serve_events(request);
+    if (request.path == "/events" && !options.api) return serve_events(request);
     if (options.api && request.path.rfind("/api/", 0) == 0) return serve_api(request);
     return serve_file(request);
   }
@@ -107,8 +138,15 @@ struct WebServer::Impl {
     HttpReply reply;
     reply.content_type = "text/event-stream";
     if (request.method == "HEAD") return reply;
-    const std::int64_t cursor = events.open_stream();
-    if (cursor < 0) return text_reply(503, "too many open event streams (at most " + std::to_string(kMaxEventStreams) + ")");
+    const std::int64_t cursor = events.open_stream(last_event_id(request));
+    if (cursor < 0) {
+      // Every place is taken: a 503 would end the page's EventSource for good; a stream that ends
+      // after its retry hint makes it try again then.
+      reply.body = ": every place is taken (at most " + std::to_string(kMaxEventStreams) + " pages)\nretry: " +
+                   std::to_string(kEventStreamFullRetry.count()) + "\n\n";
+      reply.close = true;
+      return reply;
+    }
     reply.headers.emplace_back("X-Accel-Buffering", "no");
     reply.event_stream = true;
     reply.stream_cursor = cursor;
@@ -117,18 +155,51 @@ struct WebServer::Impl {
     return reply;
   }
 
-  HttpReply serve_file(const HttpRequest& request) const {
+  static std::optional<std::int64_t> last_event_id(const HttpRequest& request) {
+    if (request.last_event_id.empty() || request.last_event_id.size() > 18) return std::nullopt;
+    std::int64_t id = 0;
+    for (const char c : request.last_event_id) {
+      if (c < '0' || c > '9') return std::nullopt;
+      id = id * 10 + (c - '0');
+    }
+    return id;
+  }
+
+  // The file's shared copy (read through storage/read_file.hpp's bounded read when no reply holds
+  // one of this version); HEAD only stats it.
+  HttpReply serve_file(const HttpRequest& request) {
     const SiteLookup lookup = find_site_file(site_root, request.path);
     if (lookup.status == SiteLookupStatus::forbidden) return text_reply(403, "forbidden: " + lookup.reason);
     if (lookup.status == SiteLookupStatus::not_found) return text_reply(404, "not found");
-    FileReadResult read = read_regular_file(lookup.file, kMaxServedFileBytes, FinalSymlink::refuse);
-    if (!read.bytes) {
-      log("cannot read " + lookup.file.string() + ": " + read.error);
+    const auto cannot_read = [&](const std::string& why) {
+      log("cannot read " + lookup.file.string() + ": " + why);
       return text_reply(500, "the file cannot be read");
+    };
+    const OpenFile file(lookup.file);
+    struct stat st {};
+    if (file.fd < 0 || ::fstat(file.fd, &st) != 0) return cannot_read(std::string("cannot open: ") + std::strerror(errno));
+    if (!S_ISREG(st.st_mode)) return cannot_read("is not a regular file");
+    if (static_cast<std::uint64_t>(st.st_size) > kMaxServedFileBytes) {
+      return cannot_read("is larger than the limit (" + std::to_string(kMaxServedFileBytes) + " bytes)");
     }
     HttpReply reply;
     reply.content_type = content_type_of(lookup.file);
-    reply.body = std::move(*read.bytes);
+    if (request.method == "HEAD") {
+      reply.head_only_bytes = static_cast<std::size_t>(st.st_size);
+      return reply;
+    }
+    FileCopies::Copy copy = copies.acquire(lookup.file.string(), version_of(st), [&](std::string& error) {
+      FileReadResult read = read_open_file(file.fd, kMaxServedFileBytes);
+      error = read.error;
+      return std::move(read.bytes);
+    });
+    if (copy.over_budget) {
+      HttpReply busy = text_reply(503, "the server is busy (its reply budget is full); try again");
+      busy.headers.emplace_back("Retry-After", "1");
+      return busy;
+    }
+    if (!copy.bytes) return cannot_read(copy.error);
+    reply.shared_body = std::move(copy.bytes);
     return reply;
   }
 };
@@ -159,6 +230,10 @@ void WebServer::publish_image_changed(const std::string& name) {
 }
 
 int WebServer::open_event_streams() const { return impl_->events.open_streams(); }
+
+HttpEngineCounts WebServer::counts() const { return impl_->engine.counts(); }
+
+std::size_t WebServer::reply_bytes_held() const { return impl_->copies.held_bytes(); }
 
 void WebServer::stop() {
   Impl& s = *impl_;

@@ -1,21 +1,20 @@
 #pragma once
 // The read-only server of a built web site (docs/web.md, "Serving"), event driven on Boost.Beast
-// (web/server/http_engine.hpp: one network thread, the routes on a few workers; an idle or slow
-// connection costs no worker):
+// (web/server/http_engine.hpp: one network thread, the routes on a few workers, the writing ones
+// apart; an idle or slow connection costs no worker):
 //   - GET and HEAD only; any other method gets 405 with "Allow: GET, HEAD" and the connection closes;
 //   - the site's folder only (web/server/site_path.hpp): '..' (also percent-encoded) and symbolic
 //     links out of the folder are forbidden (403), a folder without index.html is not found (404),
 //     nothing is ever listed;
-//   - bounded requests (web/server/http_message.hpp): a request line (URI) beyond 8 KiB gets 414
-//     and a header line beyond 8 KiB 400, a body beyond kMaxRequestBodyBytes 413; the header must
-//     be complete within 5 s of connecting (or of the last reply) and the body within 5 s after;
-//     at most 4000 connections at once (503 beyond), none per address;
-//     a file beyond kMaxServedFileBytes is not served (500);
+//   - bounded requests and connections (web/server/http_message.hpp, HttpLimits);
+//     a file beyond kMaxServedFileBytes is not served (500); a file is sent from one copy shared by
+//     every reply of it, within the reply budget (web/server/file_copies.hpp; beyond it, 503);
 //   - every response says Cache-Control: no-store (a page always fetches the latest save) and
 //     X-Content-Type-Options: nosniff; the Content-Type comes from web/server/content_type.hpp;
-//   - /events is the Server-Sent Events stream of the images' changes (web/server/event_stream.hpp);
+//   - /events is the Server-Sent Events stream of the images' changes (web/server/event_stream.hpp),
+//     without an `api` only (a study publishes nothing: there /events is 404);
 //   - one log line per request: "METHOD PATH STATUS BYTES" (control characters escaped; the query
-//     is never logged);
+//     is never logged); a route that throws answers 500 and logs "METHOD PATH: failed: WHAT";
 //   - with an `api` (vimg serve --study, web/study_server/), GET of /api/... and POST of the paths
 //     in `api_post_paths` go to it instead; every other POST is refused as above; the api is called
 //     from several workers at once;
@@ -28,6 +27,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "web/server/http_limits.hpp"
 
 namespace vimg::web {
 
@@ -61,6 +62,10 @@ struct WebServerOptions {
   ApiHandler api;                           // empty: no /api/ (plain vimg serve)
   std::vector<std::string> api_post_paths;  // the only paths a POST may reach
   std::filesystem::path tls_cert_pem, tls_key_pem;  // both empty: plain HTTP
+  // The files the api keeps open (participants' trial files): they share the descriptors with the
+  // connections (web/server/descriptor_budget.hpp). Called from the network thread.
+  std::function<int()> api_files_held;
+  HttpLimits limits;  // the documented bounds; tests shrink some
 };
 
 class WebServer {
@@ -79,8 +84,12 @@ class WebServer {
   // Tells every open page that images/NAME.vsc was rewritten ("event: image", "data: NAME").
   void publish_image_changed(const std::string& name);
   int open_event_streams() const;
+  HttpEngineCounts counts() const;
+  std::size_t reply_bytes_held() const;  // the file copies replies hold now (within the reply budget)
 
-  // Ends the open event streams, closes the listening socket and joins the threads. Idempotent.
+  // Ends the open event streams, closes the listening socket and the idle connections, lets the
+  // routes under way (an answer being synced) end and send their replies, and joins the threads.
+  // Idempotent.
   void stop();
 
  private:

@@ -42,6 +42,7 @@ void ParticipantLogs::open(const std::string& participant, ParticipantEntry& ent
   auto opened = open_log(participant);
   if (auto* log = std::get_if<TrialLog>(&opened)) {
     entry.log = std::move(*log);
+    ++open_logs_;
     return;
   }
   // Refused: a finished participant, or a file that is broken or held by another program.
@@ -60,25 +61,36 @@ std::optional<std::string> ParticipantLogs::append(const std::string& participan
     auto opened = open_log(participant);
     if (auto* problems = std::get_if<std::vector<Diagnostic>>(&opened)) return join_diagnostics(*problems);
     entry.log = std::move(std::get<TrialLog>(opened));
+    ++open_logs_;
   }
   const auto error = entry.log->append(cells);
   if (error && made_here && entry.log->completed() == 0) {
     // The file this request made holds only its header: it goes again, as if never made.
     const std::filesystem::path file = entry.log->path();
     entry.log.reset();
+    --open_logs_;
     std::error_code ec;
     std::filesystem::remove(file, ec);
   }
   return error;
 }
 
+ParticipantLogs::Slot& ParticipantLogs::slot_of(const std::string& participant) {
+  auto& owned = slots_[participant];
+  if (!owned) owned = std::make_unique<Slot>();
+  return *owned;
+}
+
+bool ParticipantLogs::take_answer(const std::string& participant, double now_s) {
+  const std::lock_guard<std::mutex> lock(map_mutex_);
+  return slot_of(participant).answers.take(now_s);
+}
+
 void ParticipantLogs::with(const std::string& participant, const std::function<void(ParticipantEntry&)>& use) {
   Slot* slot = nullptr;
   {
     const std::lock_guard<std::mutex> lock(map_mutex_);
-    auto& owned = slots_[participant];
-    if (!owned) owned = std::make_unique<Slot>();
-    slot = owned.get();
+    slot = &slot_of(participant);
   }
   const std::lock_guard<std::mutex> lock(slot->mutex);
   // A log that could not be opened (held by vimg-player, say) is tried again on the next request.

@@ -10,6 +10,7 @@
 // "finished" from a broken file. Each participant also has the bucket that rate-limits their
 // answers (kAnswerBurst at once, kAnswersPerSecond after that).
 // Threads: any; every call locks what it touches.
+#include <atomic>
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -44,13 +45,16 @@ struct ParticipantEntry {
   std::optional<TrialLog> log;  // open unless finished, broken or not made yet (no trial accepted)
   bool finished = false;
   std::string error;            // the log could not be opened (it is not finished): why
-  RateBucket answers{kAnswerBurst, kAnswersPerSecond};
   std::size_t completed() const;
 };
 
 class ParticipantLogs {
  public:
   ParticipantLogs(std::filesystem::path dir, std::size_t total_trials) : dir_(std::move(dir)), total_(total_trials) {}
+
+  // Takes one answer from the participant's bucket; false when it is empty (429). Checked before
+  // anything waits: it never takes the participant's lock, which an answer being synced holds.
+  bool take_answer(const std::string& participant, double now_s);
 
   // Runs `use` with the participant's entry locked, its log opened first if it is not yet.
   void with(const std::string& participant, const std::function<void(ParticipantEntry&)>& use);
@@ -61,15 +65,22 @@ class ParticipantLogs {
   std::optional<std::string> append(const std::string& participant, ParticipantEntry& entry,
                                     const std::vector<std::string>& cells) const;
 
+  // The trial files held open now: they share the server's descriptors with its connections
+  // (web/server/descriptor_budget.hpp). Never waits.
+  int open_logs() const { return open_logs_.load(); }
+
  private:
   struct Slot {
     std::mutex mutex;
     ParticipantEntry entry;
+    RateBucket answers{kAnswerBurst, kAnswersPerSecond};  // under map_mutex_, not `mutex`
   };
+  Slot& slot_of(const std::string& participant);  // with map_mutex_ held
   void open(const std::string& participant, ParticipantEntry& entry) const;
   std::variant<TrialLog, std::vector<Diagnostic>> open_log(const std::string& participant) const;
   std::filesystem::path dir_;
   std::size_t total_;
+  mutable std::atomic<int> open_logs_{0};
   std::mutex map_mutex_;
   std::map<std::string, std::unique_ptr<Slot>> slots_;
 };

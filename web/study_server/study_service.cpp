@@ -182,13 +182,12 @@ ApiReply StudyService::answer(const ApiRequest& request) {
   const ParsedAnswer& a = *parsed.answer;
   if (!keys_.is_participant_key(a.participant, request.key)) return text_reply(403, "forbidden: wrong or missing key");
   const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  if (!logs_.take_answer(a.participant, now_s)) {  // before the participant's lock: nothing waits for a refusal
+    return text_reply(429, "too many requests: at most " + std::to_string(static_cast<int>(kAnswersPerSecond)) +
+                               " answers a second");
+  }
   ApiReply reply;
   logs_.with(a.participant, [&](ParticipantEntry& entry) {
-    if (!entry.answers.take(now_s)) {
-      reply = text_reply(429, "too many requests: at most " + std::to_string(static_cast<int>(kAnswersPerSecond)) +
-                                  " answers a second");
-      return;
-    }
     if (!entry.error.empty()) {
       say("vimg serve: " + entry.error);
       reply = text_reply(503, "the participant's trial file cannot be opened; the server's log says why");

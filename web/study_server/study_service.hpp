@@ -42,6 +42,9 @@ class StudyService {
 
   ApiReply handle(const ApiRequest& request);
 
+  // The participants' trial files held open (WebServerOptions::api_files_held). Never waits.
+  int open_trial_files() const { return logs_.open_logs(); }
+
   // The paths a POST may reach (WebServerOptions::api_post_paths).
   static std::vector<std::string> post_paths() { return {"/api/answer"}; }
 
