@@ -8,6 +8,7 @@
 #include <iterator>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "storage/atomic_file.hpp"
 #include "tests/web_server/raw_http.hpp"
@@ -137,6 +138,40 @@ TEST_F(EventStream, ASavedImageIsRewrittenThenPushed) {
   // A write in place (an editor that truncates and writes) is a save too.
   write_text(image, "third");
   ASSERT_TRUE(page.read_until_count("event: image\ndata: smiley\n\n", 2)) << page.received();
+}
+
+// A stream ends after its lifetime (shrunk here to 300 ms; the default is kEventStreamLifetime)
+// with the chunked body's last chunk, and its place is free again; each message carries its id,
+// and a page that reopens with Last-Event-ID gets what it missed. Seen to fail (the stream stayed
+// open until the test's bound) with EventStreamWriter::arm's lifetime timer removed, and (the
+// missed message never came) with open_stream ignoring last_event_id.
+TEST_F(EventStream, AStreamEndsAfterItsLifetimeAndResumesAtItsLastEventId) {
+  web::WebServer& server = start_server([](WebServerOptions& options) {
+    options.limits.event_stream_lifetime = std::chrono::milliseconds(300);
+  });
+  RawConnection page(port());
+  open_events(page);
+  server.publish_image_changed("first");
+  ASSERT_TRUE(page.read_until("id: 1\nevent: image\ndata: first\n\n")) << page.received();
+  ASSERT_TRUE(page.read_to_end()) << "the stream outlived its lifetime: " << page.received();
+  EXPECT_NE(page.received().find("\r\n0\r\n\r\n"), std::string::npos) << "no last chunk";
+  const auto give_up = std::chrono::steady_clock::now() + kHangBound;
+  while (server.open_event_streams() > 0 && std::chrono::steady_clock::now() < give_up) std::this_thread::yield();
+  EXPECT_EQ(server.open_event_streams(), 0);
+  server.publish_image_changed("missed");  // while the page had no stream
+  RawConnection again(port());
+  ASSERT_TRUE(again.send_all("GET /events HTTP/1.1\r\nHost: localhost\r\nLast-Event-ID: 1\r\n\r\n"));
+  ASSERT_TRUE(again.read_until("id: 2\nevent: image\ndata: missed\n\n")) << again.received();
+  EXPECT_EQ(again.received().find("data: first"), std::string::npos);
+}
+
+// A study publishes nothing: with an API, /events is not served. Seen to fail (200, a stream)
+// with the `!options.api` condition removed from WebServer's respond.
+TEST_F(EventStream, NotServedWithAnApi) {
+  start_server([](WebServerOptions& options) {
+    options.api = [](const web::ApiRequest&) { return web::ApiReply{}; };
+  });
+  EXPECT_EQ(exchange(port(), "GET", "/events").status, 404);
 }
 
 }  // namespace

@@ -142,9 +142,17 @@ TEST_F(HostileSockets, AParticipantIsAnsweredBesideSilentAndSlowSockets) {
     ASSERT_EQ(answered_promptly(port(), "GET /index.html HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"), 200)
         << "after answer " << trial;
   }
-  const std::lock_guard lock(answers_mutex);
-  ASSERT_EQ(answers.size(), std::size_t{kAnswers});
-  for (int trial = 1; trial <= kAnswers; ++trial) EXPECT_EQ(answers[trial - 1], "trial=" + std::to_string(trial));
+  {
+    const std::lock_guard lock(answers_mutex);
+    ASSERT_EQ(answers.size(), std::size_t{kAnswers});
+    for (int trial = 1; trial <= kAnswers; ++trial) EXPECT_EQ(answers[trial - 1], "trial=" + std::to_string(trial));
+  }
+  // Every hostile socket, silent or slow, is closed by the server at its header deadline (and
+  // comes back). Seen to fail (none reopened within the bound) with the header deadline removed
+  // from Session::read_header.
+  const auto give_up = Clock::now() + 3 * web::kHeaderDeadline;
+  while (hostile.reopened() < kSilentSockets + kSlowSockets && Clock::now() < give_up) std::this_thread::yield();
+  EXPECT_GE(hostile.reopened(), kSilentSockets + kSlowSockets);
 }
 
 // A page that closes its event stream frees its place among the kMaxEventStreams at once, not at

@@ -40,6 +40,7 @@ class RawConnection {
   RawConnection& operator=(const RawConnection&) = delete;
 
   bool connected() const { return connected_; }
+  int fd() const { return fd_; }
 
   bool send_all(const std::string& bytes) {
     std::size_t sent = 0;

@@ -3,7 +3,9 @@
 // file beside it that no request may reach, and a WebServer on a free port whose log lines are kept.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <mutex>
 #include <string>
@@ -43,14 +45,15 @@ class SiteFixture : public ::testing::Test {
   }
   void TearDown() override { server_.reset(); }
 
-  // Starts the server on a free port of 127.0.0.1.
-  WebServer& start_server() {
+  // Starts the server on a free port of 127.0.0.1 (its options changed by `configure` first).
+  WebServer& start_server(const std::function<void(WebServerOptions&)>& configure = {}) {
     WebServerOptions options;
     options.site_dir = site_;
     options.log_line = [this](const std::string& line) {
       const std::lock_guard lock(log_mutex_);
       log_.push_back(line);
     };
+    if (configure) configure(options);
     server_ = std::make_unique<WebServer>(options);
     const auto problem = server_->start();
     EXPECT_FALSE(problem) << *problem;
@@ -60,6 +63,10 @@ class SiteFixture : public ::testing::Test {
   std::vector<std::string> log() {
     const std::lock_guard lock(log_mutex_);
     return log_;
+  }
+  bool logged(const std::string& line) {
+    const std::lock_guard lock(log_mutex_);
+    return std::find(log_.begin(), log_.end(), line) != log_.end();
   }
 
   fs::path root_, site_;

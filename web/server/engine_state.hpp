@@ -35,7 +35,7 @@ class Connection {
 
 struct AtomicCounts {
   std::atomic<int> open_connections{0};
-  std::atomic<long> refused_busy{0}, closed_unanswered{0}, routes_dropped{0}, routes_failed{0};
+  std::atomic<long> refused_busy{0}, closed_unanswered{0}, routes_queued{0}, routes_dropped{0}, routes_failed{0};
 };
 
 struct EngineState {

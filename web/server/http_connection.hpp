@@ -178,6 +178,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     in_flight_ = true;
     watch_for_departure();
     net::thread_pool& pool = request_.method == "POST" ? *engine_.write_pool : *engine_.read_pool;
+    ++engine_.counts.routes_queued;
     net::post(pool, [self = this->shared_from_this()]() mutable {
       HttpReply reply;
       std::string failure;

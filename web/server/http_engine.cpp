@@ -170,8 +170,8 @@ int HttpEngine::max_connections() const {
 
 HttpEngineCounts HttpEngine::counts() const {
   const AtomicCounts& c = impl_->state.counts;
-  return {c.open_connections.load(), c.refused_busy.load(), c.closed_unanswered.load(), c.routes_dropped.load(),
-          c.routes_failed.load()};
+  return {c.open_connections.load(), c.refused_busy.load(), c.closed_unanswered.load(), c.routes_queued.load(),
+          c.routes_dropped.load(), c.routes_failed.load()};
 }
 
 void HttpEngine::wake_event_streams() {

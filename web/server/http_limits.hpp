@@ -60,6 +60,7 @@ struct HttpEngineCounts {
   int open_connections = 0;    // served connections open now
   long refused_busy = 0;       // connections beyond the cap answered 503 (or being answered)
   long closed_unanswered = 0;  // connections beyond even the refusals' places, closed at once
+  long routes_queued = 0;      // requests handed to a worker's queue
   long routes_dropped = 0;     // routes not run because their client had gone
   long routes_failed = 0;      // routes that threw (answered 500)
 };
