@@ -40,6 +40,7 @@ bool LiveTracker::apply(const TouchEvent& e, double now_s) {
     f.pressure = pressure;
     reset_finger_history(f.history);
     add_finger_event(f.history, e.time_s, e.x_mm, e.y_mm);
+    reset_predicted_path(f.path);
     return true;
   }
   f.pressure = pressure;
@@ -55,6 +56,7 @@ bool LiveTracker::apply(const TouchEvent& e, double now_s) {
   f.event_x_m = x;
   f.event_y_m = y;
   add_finger_event(f.history, e.time_s, e.x_mm, e.y_mm);
+  reset_predicted_path(f.path);
   const double dt = e.time_s - f.anchor_time_s;
   if (dt < options_.min_interval_s) return true;  // too close for a usable velocity: position only
   const double raw_vx = (x - f.anchor_x_m) / dt;
@@ -84,9 +86,12 @@ void LiveTracker::set_prediction(double horizon_s, TouchPredictionModel model) {
   model_ = model;
 }
 
-Vec3 LiveTracker::position_at(const Finger& f, double time_s) const {
+Vec3 LiveTracker::position_at(Finger& f, double time_s) {
   if (horizon_s_ <= 0.0) return reckoned_position(f, time_s);
-  const PredictedPosition p = predict_finger_at(f.history, std::max(time_s, f.event_time_s), horizon_s_, model_);
+  const int runs = f.path.predictions;
+  const PredictedPosition p = predicted_path_at(f.path, f.history, std::max(time_s, f.event_time_s), horizon_s_, model_,
+                                                options_.prediction_interval_s);
+  model_runs_ += static_cast<std::uint64_t>(f.path.predictions - runs);
   return {p.x_mm * kMetresPerMm, p.y_mm * kMetresPerMm, 0.0};
 }
 

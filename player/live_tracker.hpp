@@ -19,6 +19,10 @@
 // already rendered, so nothing is rendered past the lift, not even the way back to the up event's
 // position. While the prediction follows a finger (up to kSilenceStop_s after its last event) its
 // filtered velocity is reported, so late-stamped events still drive speed-dependent shaders.
+// The model runs twice per event and once per prediction_interval_s of silence, not once per step:
+// between its runs the position follows the predicted offset interpolated linearly in time, the
+// silence fade applied at each step (primitives/touch_prediction/predicted_path.hpp); 0 runs
+// predict_finger_at() at every step (the reference the interpolation is tested against).
 // H = 0 (the default) keeps the dead reckoning above.
 #include <array>
 #include <cstddef>
@@ -29,6 +33,7 @@
 #include "player/render_defaults.hpp"
 #include "player/touch_event.hpp"
 #include "primitives/touch_prediction/finger_predictor.hpp"
+#include "primitives/touch_prediction/predicted_path.hpp"
 
 namespace vimg {
 
@@ -37,6 +42,8 @@ struct LiveTrackerOptions {
   double min_interval_s = 0.001;
   double max_extrapolation_s = 0.03;
   double stale_after_s = 0.1;
+  // With prediction: the span over which the predicted offset is interpolated (0: every step).
+  double prediction_interval_s = kDefaultPredictionInterval_s;
 };
 
 class LiveTracker {
@@ -57,6 +64,8 @@ class LiveTracker {
   // finite) turns prediction off. Call before the first step or between steps, never during one.
   void set_prediction(double horizon_s, TouchPredictionModel model = kDefaultTouchPredictionModel);
   double prediction_horizon_s() const { return horizon_s_; }
+  // How many times the predictor's model has run, all fingers, since construction.
+  std::uint64_t model_runs() const { return model_runs_; }
 
  private:
   struct Finger {
@@ -76,14 +85,16 @@ class LiveTracker {
     Vec3 rendered_m;              // position at the last step
     bool rendered_valid = false;
     FingerHistory history;        // mm, for the predictor
+    PredictedPath path;           // the predictor's last runs on `history`
   };
   Vec3 reckoned_position(const Finger& f, double time_s) const;
-  Vec3 position_at(const Finger& f, double time_s) const;
+  Vec3 position_at(Finger& f, double time_s);
 
   LiveTrackerOptions options_;
   std::array<Finger, kMaxFingers> fingers_{};
   std::uint32_t next_touch_id_ = 1;
   std::uint64_t dropped_ = 0;
+  std::uint64_t model_runs_ = 0;
   double horizon_s_ = 0.0;
   TouchPredictionModel model_ = kDefaultTouchPredictionModel;
 };

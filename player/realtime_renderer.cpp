@@ -184,6 +184,7 @@ void RealtimeRenderer::render_block(double block_start_s, double event_offset_s)
     m.block[i] = static_cast<float>(y);
   }
   active_contacts_.store(m.current->active_contacts() + m.fading->active_contacts(), std::memory_order_relaxed);
+  model_runs_.store(m.tracker.model_runs(), std::memory_order_relaxed);
 }
 
 void RealtimeRenderer::publish_rate(std::int64_t now_ns) {
@@ -302,6 +303,7 @@ LoopStats RealtimeRenderer::stats() const {
   s.scene_generation = scene_generation_.load(std::memory_order_relaxed);
   s.scenes_superseded = scenes_superseded_.load(std::memory_order_relaxed);
   s.prediction_horizon_s = prediction_horizon_s_.load(std::memory_order_relaxed);
+  s.model_runs = model_runs_.load(std::memory_order_relaxed);
   return s;
 }
 

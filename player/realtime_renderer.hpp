@@ -103,6 +103,7 @@ struct LoopStats {
   std::uint64_t scenes_superseded = 0;  // replaced in the mailbox before the render thread took them
   // How far ahead fingers are predicted: the panel's latency plus the sink's output latency (0: off).
   double prediction_horizon_s = 0.0;
+  std::uint64_t model_runs = 0;  // the predictor's model runs so far, all fingers (LiveTracker::model_runs)
 };
 
 class RealtimeRenderer {
@@ -189,6 +190,7 @@ class RealtimeRenderer {
   std::atomic<int> priority_error_{0};
   std::atomic<bool> priority_granted_{false};
   std::atomic<double> prediction_horizon_s_{0.0};
+  std::atomic<std::uint64_t> model_runs_{0};
 };
 
 }  // namespace vimg

@@ -165,6 +165,15 @@ PredictedPosition predict_finger(const FingerHistory& history, double horizon_s,
   return {now.x_mm, now.y_mm};
 }
 
+std::array<PredictedPosition, 2> predict_finger_pair(const FingerHistory& history, double first_horizon_s,
+                                                     double second_horizon_s, TouchPredictionModel model) {
+  if (model != TouchPredictionModel::learned || history.count == 0) {
+    return {predict_finger(history, first_horizon_s, model), predict_finger(history, second_horizon_s, model)};
+  }
+  auto finite = [](double h) { return std::isfinite(h) ? std::max(0.0, h) : 0.0; };
+  return predict_learned_pair(history, finite(first_horizon_s), finite(second_horizon_s));
+}
+
 PredictedPosition predict_finger_at(const FingerHistory& history, double now_s, double ahead_s,
                                     TouchPredictionModel model) {
   if (history.count == 0) return {};

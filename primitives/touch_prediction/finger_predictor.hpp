@@ -91,6 +91,11 @@ double last_finger_event_time_s(const FingerHistory& history);
 // history gives (0, 0).
 PredictedPosition predict_finger(const FingerHistory& history, double horizon_s, TouchPredictionModel model);
 
+// predict_finger() at two horizons of one history, each the same as alone; the learned model
+// shares its per-history work between them (learned_predictor.hpp), the others run twice.
+std::array<PredictedPosition, 2> predict_finger_pair(const FingerHistory& history, double first_horizon_s,
+                                                     double second_horizon_s, TouchPredictionModel model);
+
 inline constexpr double kSilenceHold_s = 0.05;
 inline constexpr double kSilenceStop_s = 0.1;
 

@@ -32,11 +32,25 @@ std::array<FingerHistory::Point, kLearnedPoints> selected_points(const FingerHis
   return p;
 }
 
-// Two ReLU layers, then kLearnedMaxGain * tanh: f in the stroke frame.
-std::array<double, 2> forward(const std::array<double, kLearnedInputs>& x) {
-  std::array<double, kLearnedWidth> a1{}, a2{};
+// The first layer's sums over every input but the last two (the horizon and ln S), with its bias:
+// what two horizons of one history share.
+constexpr int kHorizonInput = kLearnedInputs - 2;
+
+std::array<double, kLearnedWidth> first_layer_shared(const std::array<double, kLearnedInputs>& x) {
+  std::array<double, kLearnedWidth> a1{};
   for (int j = 0; j < kLearnedWidth; ++j) a1[static_cast<std::size_t>(j)] = kLearnedB1[j];
-  for (int i = 0; i < kLearnedInputs; ++i) {
+  for (int i = 0; i < kHorizonInput; ++i) {
+    const double xi = x[static_cast<std::size_t>(i)];
+    for (int j = 0; j < kLearnedWidth; ++j) a1[static_cast<std::size_t>(j)] += xi * kLearnedW1[i][j];
+  }
+  return a1;
+}
+
+// The rest of the first layer (in the same order: the sums are those of one pass over every
+// input), two ReLU layers, then kLearnedMaxGain * tanh: f in the stroke frame.
+std::array<double, 2> forward(std::array<double, kLearnedWidth> a1, const std::array<double, kLearnedInputs>& x) {
+  std::array<double, kLearnedWidth> a2{};
+  for (int i = kHorizonInput; i < kLearnedInputs; ++i) {
     const double xi = x[static_cast<std::size_t>(i)];
     for (int j = 0; j < kLearnedWidth; ++j) a1[static_cast<std::size_t>(j)] += xi * kLearnedW1[i][j];
   }
@@ -88,11 +102,21 @@ double recent_reach_mm(const FingerHistory& h) {
   return std::sqrt(largest2);
 }
 
-}  // namespace
+// Everything of one history that does not depend on the horizon.
+struct Prepared {
+  FingerHistory::Point now;
+  bool still = false;  // every step zero: the finger is where it is at any horizon
+  double scale_mm = 0.0, c = 1.0, s = 0.0;
+  std::array<double, kLearnedInputs> x{};
+  std::array<double, kLearnedWidth> a1{};
+  Gate gate;
+  double reach_mm = 0.0;
+};
 
-PredictedPosition predict_learned(const FingerHistory& history, double horizon_s) {
+Prepared prepare(const FingerHistory& history) {
   const std::array<FingerHistory::Point, kLearnedPoints> p = selected_points(history);
-  const FingerHistory::Point& now = p[0];
+  Prepared r;
+  r.now = p[0];
   std::array<double, kSteps> sx{}, sy{}, gap{};
   double length_mm = 0.0;
   for (std::size_t j = 1; j < p.size(); ++j) {
@@ -101,29 +125,52 @@ PredictedPosition predict_learned(const FingerHistory& history, double horizon_s
     gap[j - 1] = p[j - 1].time_s - p[j].time_s;
     length_mm += std::sqrt(sx[j - 1] * sx[j - 1] + sy[j - 1] * sy[j - 1]);
   }
-  if (length_mm == 0.0 || horizon_s <= 0.0) return {now.x_mm, now.y_mm};
-  const double scale_mm = length_mm / kSteps;
-  const double ux = now.x_mm - p[3].x_mm, uy = now.y_mm - p[3].y_mm;
+  r.still = length_mm == 0.0;
+  if (r.still) return r;
+  r.scale_mm = length_mm / kSteps;
+  const double ux = r.now.x_mm - p[3].x_mm, uy = r.now.y_mm - p[3].y_mm;
   const double norm = std::sqrt(ux * ux + uy * uy);
-  const double c = norm > 0.0 ? ux / norm : 1.0, s = norm > 0.0 ? uy / norm : 0.0;
-  std::array<double, kLearnedInputs> x{};
+  r.c = norm > 0.0 ? ux / norm : 1.0;
+  r.s = norm > 0.0 ? uy / norm : 0.0;
   for (std::size_t j = 0; j < static_cast<std::size_t>(kSteps); ++j) {
-    x[3 * j] = (c * sx[j] + s * sy[j]) / scale_mm;
-    x[3 * j + 1] = (-s * sx[j] + c * sy[j]) / scale_mm;
-    x[3 * j + 2] = std::clamp(gap[j] / kLearnedNominalGap_s - 1.0, -1.0, 3.0);
+    r.x[3 * j] = (r.c * sx[j] + r.s * sy[j]) / r.scale_mm;
+    r.x[3 * j + 1] = (-r.s * sx[j] + r.c * sy[j]) / r.scale_mm;
+    r.x[3 * j + 2] = std::clamp(gap[j] / kLearnedNominalGap_s - 1.0, -1.0, 3.0);
   }
-  x[kLearnedInputs - 2] = std::min(horizon_s, kLearnedHorizonRef_s) / kLearnedHorizonRef_s;
-  x[kLearnedInputs - 1] = std::clamp(std::log(scale_mm) / 2.0, -3.0, 2.0);
-  const std::array<double, 2> f = forward(x);
-  const double gain = scale_mm * horizon_s / kLearnedHorizonRef_s;
+  r.x[kLearnedInputs - 1] = std::clamp(std::log(r.scale_mm) / 2.0, -3.0, 2.0);
+  r.a1 = first_layer_shared(r.x);
+  r.gate = velocity_gate(sx, sy, gap);
+  r.reach_mm = recent_reach_mm(history);
+  return r;
+}
+
+PredictedPosition at_horizon(Prepared& r, double horizon_s) {
+  if (r.still || horizon_s <= 0.0) return {r.now.x_mm, r.now.y_mm};
+  r.x[kHorizonInput] = std::min(horizon_s, kLearnedHorizonRef_s) / kLearnedHorizonRef_s;
+  const std::array<double, 2> f = forward(r.a1, r.x);
+  const double gain = r.scale_mm * horizon_s / kLearnedHorizonRef_s;
   const double lx = f[0] * gain, ly = f[1] * gain;
-  const Gate g = velocity_gate(sx, sy, gap);
-  const double ox = g.weight * g.vx * horizon_s + (1.0 - g.weight) * (c * lx - s * ly);
-  const double oy = g.weight * g.vy * horizon_s + (1.0 - g.weight) * (s * lx + c * ly);
+  const Gate& g = r.gate;
+  const double ox = g.weight * g.vx * horizon_s + (1.0 - g.weight) * (r.c * lx - r.s * ly);
+  const double oy = g.weight * g.vy * horizon_s + (1.0 - g.weight) * (r.s * lx + r.c * ly);
   const double size = std::sqrt(ox * ox + oy * oy);
-  const double limit = horizon_s * kLearnedReachPerSecond * recent_reach_mm(history);
+  const double limit = horizon_s * kLearnedReachPerSecond * r.reach_mm;
   const double shrink = size > limit ? limit / size : 1.0;
-  return {now.x_mm + ox * shrink, now.y_mm + oy * shrink};
+  return {r.now.x_mm + ox * shrink, r.now.y_mm + oy * shrink};
+}
+
+}  // namespace
+
+PredictedPosition predict_learned(const FingerHistory& history, double horizon_s) {
+  Prepared r = prepare(history);
+  return at_horizon(r, horizon_s);
+}
+
+std::array<PredictedPosition, 2> predict_learned_pair(const FingerHistory& history, double first_horizon_s,
+                                                      double second_horizon_s) {
+  Prepared r = prepare(history);
+  const PredictedPosition first = at_horizon(r, first_horizon_s);
+  return {first, at_horizon(r, second_horizon_s)};
 }
 
 }  // namespace vimg
