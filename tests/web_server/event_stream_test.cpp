@@ -143,7 +143,7 @@ TEST_F(EventStream, ASavedImageIsRewrittenThenPushed) {
 // A stream ends after its lifetime (shrunk here to 300 ms; the default is kEventStreamLifetime)
 // with the chunked body's last chunk, and its place is free again; each message carries its id,
 // and a page that reopens with Last-Event-ID gets what it missed. Seen to fail (the stream stayed
-// open until the test's bound) with EventStreamWriter::arm's lifetime timer removed, and (the
+// open until the test's bound) with EventStreamWriter::arm's lifetime made 1000 times longer, and (the
 // missed message never came) with open_stream ignoring last_event_id.
 TEST_F(EventStream, AStreamEndsAfterItsLifetimeAndResumesAtItsLastEventId) {
   web::WebServer& server = start_server([](WebServerOptions& options) {

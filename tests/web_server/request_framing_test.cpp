@@ -94,8 +94,7 @@ TEST_F(RequestFraming, PipelinedRequestsAreAnsweredInOrder) {
 }
 
 // Framings a proxy in front could read otherwise than the server (request smuggling): 400, the
-// route never runs. Seen to fail (200 for a length twice and for the list; Beast itself refuses
-// the two others) with unambiguous_framing returning true.
+// route never runs. Seen to fail with unambiguous_framing returning true.
 TEST_F(RequestFraming, AmbiguousFramingIs400) {
   StubApi api(root_ / "answers.txt");
   start_server([&](WebServerOptions& options) { api.install(options); });
