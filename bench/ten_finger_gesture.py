@@ -7,14 +7,14 @@ in the render loop"; issue 44):
     vimg render assets/examples/smiley.vimg --gesture ten_fingers_20s.csv --rate 48000 \
         --touch-latency-ms 60 --out /tmp/out.wav
 
-Ten fingers on a 2 x 5 grid, each circling its own centre (radius 12 mm) at 120 mm/s, one event per
+Ten fingers on a 2 x 5 grid inside the face, each circling its own centre (radius 8 mm) at 120 mm/s, one event per
 finger every 1/120 s (a 120 Hz panel), down at 0 s and up at 20 s. Deterministic (no noise)."""
 import math
 import sys
 
 DURATION_S = 20.0
 EVENT_RATE_HZ = 120.0
-RADIUS_MM = 12.0
+RADIUS_MM = 8.0
 SPEED_MM_PER_S = 120.0
 
 
@@ -27,8 +27,8 @@ def main() -> None:
         t = k / EVENT_RATE_HZ
         phase = "down" if k == 0 else "up" if k == events else "move"
         for finger in range(10):
-            cx = 20.0 + 30.0 * (finger % 2)
-            cy = 22.0 + 24.0 * (finger // 2)
+            cx = 25.0 + 20.0 * (finger % 2)
+            cy = 46.0 + 12.0 * (finger // 2)
             a = omega_rad_per_s * t + finger * 0.7
             out.write(f"{t:.9g},{finger},{cx + RADIUS_MM * math.cos(a):.6f},{cy + RADIUS_MM * math.sin(a):.6f},1,{phase}\n")
 
