@@ -35,6 +35,9 @@ class VimgProcessor extends AudioWorkletProcessor {
     this.peak = 0;
     this.blocks = 0;
     this.applied = [];           // [id, stampS, firstSampleS] since the last report
+    // The rendered block, a view of the wasm's memory made again only when the memory grows or the
+    // renderer's block moves: a block allocates nothing here (tests/browser/worklet_allocation_test.mjs).
+    this.view = null;
     // A message that fails (a wasm that does not instantiate, say) is reported, never swallowed.
     this.port.onmessage = (e) => {
       try {
@@ -101,6 +104,20 @@ class VimgProcessor extends AudioWorkletProcessor {
     }
   }
 
+  // The block just rendered, as a Float32Array over the wasm's memory (the same one while it fits).
+  blockAt(at, frames) {
+    const v = this.view;
+    if (v === null || v.buffer !== this.memory.buffer || v.byteOffset !== at || v.length !== frames) {
+      this.view = new Float32Array(this.memory.buffer, at, frames);  // a byte offset
+    }
+    return this.view;
+  }
+
+  // The first sample at or after t (the block's first when already past), on the context's clock.
+  firstSampleS(t, start) {
+    return this.offsetS + start + Math.max(0, Math.ceil((t - start) * sampleRate - 1e-6)) / sampleRate;
+  }
+
   render(outputs) {
     const out = outputs[0];
     if (!this.exports || out.length === 0) return true;
@@ -108,27 +125,35 @@ class VimgProcessor extends AudioWorkletProcessor {
     const start = x.vimg_live_time_s();
     this.offsetS = currentTime - start;
     const frames = out[0].length;
-    const block = new Float32Array(this.memory.buffer, x.vimg_live_render(frames), frames);  // a byte offset
+    const block = this.blockAt(x.vimg_live_render(frames), frames);
     // The events this block applied (their time is before its end) are reported with it, with their
-    // first affected sample: the first at or after their time (the block's first when already past).
+    // first affected sample; the others stay pending (compacted in place).
     const end = x.vimg_live_time_s();
-    if (this.pending.length > 0) {
-      const first = (t) => this.offsetS + start + Math.max(0, Math.ceil((t - start) * sampleRate - 1e-6)) / sampleRate;
-      this.pending = this.pending.filter((e) => (e.time < end ? (this.applied.push([e.id, e.stampS, first(e.time)]), false) : true));
+    const pending = this.pending;
+    let kept = 0;
+    for (let i = 0; i < pending.length; ++i) {
+      const e = pending[i];
+      if (e.time < end) this.applied.push([e.id, e.stampS, this.firstSampleS(e.time, start)]);
+      else pending[kept++] = e;
     }
-    for (const channel of out) channel.set(block);
+    pending.length = kept;
+    for (let c = 0; c < out.length; ++c) out[c].set(block);
+    let peak = this.peak;
     for (let i = 0; i < frames; ++i) {
       this.scope[this.scopeAt] = block[i];
       this.scopeAt = (this.scopeAt + 1) % this.scope.length;
+      // The peak of every block since the last report, so no block's output goes unseen.
+      peak = Math.max(peak, Math.abs(block[i]));
     }
-    // The peak of every block since the last report, so no block's output goes unseen.
-    for (let i = 0; i < frames; ++i) this.peak = Math.max(this.peak, Math.abs(block[i]));
-    // The first block that carries an event's effect reports it (the latency benchmark reads this).
+    this.peak = peak;
+    // The first block that carries an event's effect reports it (the latency benchmark reads this);
+    // otherwise every 8th block. postMessage copies the scope and the applied list at once, so both
+    // are reused.
     if (this.applied.length > 0 || ++this.blocks % 8 === 0) {
-      this.port.postMessage({ type: 'scope', samples: this.scope.slice(), at: this.scopeAt, peak: this.peak,
+      this.port.postMessage({ type: 'scope', samples: this.scope, at: this.scopeAt, peak: this.peak,
                               contacts: x.vimg_live_contacts(), applied: this.applied, time: currentTime,
                               horizonS: x.vimg_live_prediction_horizon_s() });
-      this.applied = [];
+      this.applied.length = 0;
       this.peak = 0;
     }
     return true;
