@@ -27,6 +27,9 @@ class EventStreamWriter {
     cursor_ = cursor;
   }
   bool open() const { return holds_place_; }
+  // The greeting is written and the stream armed: chunks may be written now (not while the
+  // reply's head is still being written).
+  bool streaming() const { return holds_place_ && flush_ != nullptr; }
   bool ended() const { return ending_; }
 
   // Starts the keep-alive comments and the lifetime; `flush` writes what take() gives.

@@ -83,7 +83,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
   }
 
   void events_changed() override {
-    if (finished_ || !events_.open()) return;
+    if (finished_ || !events_.streaming()) return;
     events_.changed(*engine_.routes.events);
     flush_stream();
   }
