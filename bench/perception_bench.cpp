@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "primitives/perception/discrimination_choice.hpp"
+#include "primitives/perception/identification_choice.hpp"
 #include "primitives/perception/predicted_confusion.hpp"
 #include "primitives/perception/stsim.hpp"
 
@@ -87,7 +88,7 @@ void BM_CompareTwentySignals(benchmark::State& state) {
   for (auto _ : state) {
     const auto features = analyse_all();
     benchmark::DoNotOptimize(stsim_matrix(features.stsim));
-    const PerceptionMatrix p = discrimination_confusion(cue_matrix(features.discrimination));
+    const PerceptionMatrix p = identification_confusion(cue_matrix(features.discrimination));
     benchmark::DoNotOptimize(likely_confused_pairs(p));
   }
 }

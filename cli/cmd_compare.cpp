@@ -1,6 +1,7 @@
 // `vimg compare IMAGE... [--actuator P] [--gesture G.csv]... --out REPORT.json|.html|.csv`: will
 // people tell these images apart? (docs/studies.md, "Predicting confusion: vimg compare";
 // study/compare.hpp does the work, study/compare_output.hpp writes the report).
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -100,6 +101,14 @@ int run_compare_command(const CompareArgs& a) {
   if (result.interrupted || rest_requested()) return interrupted(a.out);
   if (!result.ok()) return kExitFailure;
   for (const std::string& w : result.warnings) std::fprintf(stderr, "%s: warning: %s\n", kProgram, w.c_str());
+  const bool all_images = std::all_of(result.inputs.begin(), result.inputs.end(), [](const study::CompareInput& in) {
+    return in.kind == study::CompareInputKind::image;
+  });
+  if (!result.warnings.empty() && all_images)
+    std::fprintf(stderr,
+                 "%s: `vimg separate` on these images proposes which tactile parameters to change, and how far, so "
+                 "that people tell them apart (docs/separate.md)\n",
+                 kProgram);
   // Written atomically; a signal that arrives before the rename still leaves nothing.
   // A new report takes the permission bits all the inputs share (one private image keeps it private).
   AtomicFileWriter file(a.out, NewFileMode::of_all({request.inputs.begin(), request.inputs.end()}));

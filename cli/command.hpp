@@ -19,6 +19,7 @@ void add_gesture_predict(CLI::App& gesture, int& exit_code);
 void add_volume_command(CLI::App& vimg, int& exit_code);
 void add_import_command(CLI::App& vimg, int& exit_code);
 void add_compare_command(CLI::App& vimg, int& exit_code);
+void add_separate_command(CLI::App& vimg, int& exit_code);
 void add_study_command(CLI::App& vimg, int& exit_code);
 // `vimg study fit` (cmd_study_fit.cpp), a subcommand of `vimg study`.
 void add_study_fit(CLI::App& study, int& exit_code);

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   add_volume_command(app, exit_code);
   add_import_command(app, exit_code);
   add_compare_command(app, exit_code);
+  add_separate_command(app, exit_code);
   add_study_command(app, exit_code);
   add_web_command(app, exit_code);
   add_serve_command(app, exit_code);

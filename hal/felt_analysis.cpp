@@ -80,4 +80,14 @@ std::vector<FeltWarning> felt_warnings(const Image& image, const FeltAnalysis& a
   return out;
 }
 
+std::vector<std::size_t> weak_primitive_indices(const Image& image, const FeltAnalysis& analysis) {
+  std::vector<std::size_t> out;
+  const std::vector<PrimitiveFrequency> all = primitive_frequencies(image, analysis.profile().resonance_hz);
+  const std::vector<FeltWarning> weak = felt_warnings(image, analysis);
+  for (std::size_t k = 0; k < all.size(); ++k)
+    for (const FeltWarning& w : weak)
+      if (w.element == all[k].element) out.push_back(k);
+  return out;
+}
+
 }  // namespace vimg

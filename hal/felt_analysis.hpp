@@ -59,6 +59,9 @@ struct FeltWarning {
   std::string message;
 };
 std::vector<FeltWarning> felt_warnings(const Image& image, const FeltAnalysis& analysis);
+// The same primitives as their indices in primitive_frequencies' paint order (`vimg separate`
+// keeps every primitive felt that was felt: study/separate.hpp).
+std::vector<std::size_t> weak_primitive_indices(const Image& image, const FeltAnalysis& analysis);
 
 // A frequency as people read it: "175", "16.3", "0.5".
 std::string format_hz(double frequency_hz);

@@ -195,7 +195,7 @@ CompareResult run_compare(const CompareRequest& request) {
     for (std::size_t j = 0; j < i; ++j) r.cues[i][j] = r.cues[j][i];
     for (std::size_t j = 0; j < n; ++j) r.distance_jnd[i][j] = combined_distance_jnd(r.cues[i][j], request.discrimination);
   }
-  r.predicted_confusion = discrimination_confusion(r.cues, request.discrimination);
+  r.predicted_confusion = identification_confusion(r.cues, request.discrimination);
   r.likely_confused = likely_confused_pairs(r.predicted_confusion, request.choice);
   for (const ConfusedPair& pair : r.likely_confused)
     r.warnings.push_back(confusion_warning(r.inputs[pair.a].label, r.inputs[pair.b].label, pair.p));

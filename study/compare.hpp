@@ -21,6 +21,7 @@
 #include "primitives/gesture.hpp"
 #include "primitives/actuator/response_params.hpp"
 #include "primitives/perception/discrimination_choice.hpp"
+#include "primitives/perception/identification_choice.hpp"
 #include "primitives/perception/discrimination_cues.hpp"
 #include "primitives/perception/predicted_confusion.hpp"
 #include "primitives/perception/sensation_level.hpp"
@@ -84,7 +85,7 @@ struct CompareResult {
   std::vector<DiscriminationFeatures> features;      // of every input, in order
   CueMatrix cues;                                    // cue_matrix(features): [presented][chosen], JNDs
   PerceptionMatrix distance_jnd;                     // combined_distance_jnd of cues under discrimination
-  PerceptionMatrix predicted_confusion;  // discrimination_confusion: rows presented, columns chosen, each sums to 1
+  PerceptionMatrix predicted_confusion;  // identification_confusion: rows presented, columns chosen, each sums to 1
   std::vector<ConfusedPair> likely_confused;
   std::vector<std::string> warnings;     // "A.vimg ~ B.vimg: likely confused (p = 0.50)", one per pair
   std::vector<Diagnostic> diagnostics;   // of the inputs (warnings, or errors: then nothing else is set)

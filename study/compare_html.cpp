@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "study/compare_output.hpp"
+#include "study/compare_output_parts.hpp"
 #include "study/report_svg.hpp"
 
 namespace vimg::study {
@@ -17,12 +18,6 @@ constexpr const char* kStyle =
     "th{background:#eee}td.name,th.name{text-align:left}.warn{color:#8a3b00}.note{color:#555;font-size:0.9em}"
     "figure{display:inline-block;margin:0 2em 1em 0;vertical-align:top}";
 
-std::string number_text(double v, int decimals) {
-  if (!std::isfinite(v)) return "\u2013";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
-  return text;
-}
 
 std::vector<std::string> labels(const CompareResult& r) {
   std::vector<std::string> out;
@@ -30,22 +25,6 @@ std::vector<std::string> labels(const CompareResult& r) {
   return out;
 }
 
-HeatMap heat_map(const CompareResult& r, const PerceptionMatrix& m, std::string title) {
-  HeatMap map;
-  map.title = std::move(title);
-  map.labels = labels(r);
-  for (const auto& row : m) {
-    std::vector<std::optional<double>> shade;
-    std::vector<std::string> cells;
-    for (const double v : row) {
-      shade.push_back(std::isfinite(v) ? std::optional(v) : std::nullopt);
-      cells.push_back(number_text(v, 2));
-    }
-    map.shade.push_back(std::move(shade));
-    map.cells.push_back(std::move(cells));
-  }
-  return map;
-}
 
 std::string distance_table(const CompareResult& r) {
   std::string cues;
@@ -85,6 +64,33 @@ std::string stsim_table(const CompareResult& r) {
   return s + "</table>\n";
 }
 
+
+}  // namespace
+
+std::string number_text(double v, int decimals) {
+  if (!std::isfinite(v)) return "\u2013";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", decimals, v);
+  return text;
+}
+
+HeatMap matrix_heat_map(std::vector<std::string> labels, const PerceptionMatrix& m, std::string title) {
+  HeatMap map;
+  map.title = std::move(title);
+  map.labels = std::move(labels);
+  for (const auto& row : m) {
+    std::vector<std::optional<double>> shade;
+    std::vector<std::string> cells;
+    for (const double v : row) {
+      shade.push_back(std::isfinite(v) ? std::optional(v) : std::nullopt);
+      cells.push_back(number_text(v, 2));
+    }
+    map.shade.push_back(std::move(shade));
+    map.cells.push_back(std::move(cells));
+  }
+  return map;
+}
+
 std::string setup_html(const CompareResult& r) {
   std::string s = "<h2>How the images were felt</h2>\n<ul>\n";
   const CompareActuator& a = r.actuator;
@@ -109,16 +115,14 @@ std::string setup_html(const CompareResult& r) {
   for (std::size_t c = 0; c < kCueCount; ++c) {
     weights += (c ? ", " : "") + std::string(cue_name(c)) + " " + number_text(r.discrimination.cue_weight[c], 2);
   }
-  s += "<li>Model: the discrimination model of docs/perception.md (full scale " +
+  s += "<li>Model: the cues of docs/perception.md (full scale " +
        number_text(r.calibration.full_scale_peak_acceleration_mps2, 2) + " m/s\u00b2 peak; JNDs " +
        number_text(kLevelJndDb, 1) + " dB of level, " + number_text(100.0 * kFrequencyWeberFraction, 0) +
-       " % of frequency); choice with temperature " + number_text(r.discrimination.temperature_jnd, 3) +
-       " JND, lapse rate " + number_text(r.discrimination.lapse_rate, 3) + ", cue weights " + xml_text(weights) +
+       " % of frequency) and its identification model (context noise " + number_text(kContextNoisePerDPrime, 2) +
+       " per d' of the set's range on each cue), lapse rate " + number_text(r.discrimination.lapse_rate, 3) + ", cue weights " + xml_text(weights) +
        "; a pair is likely confused from p = " + number_text(r.choice.likely_confused_p, 2) + ".</li>\n</ul>\n";
   return s;
 }
-
-}  // namespace
 
 std::string compare_html(const CompareResult& r) {
   std::string s = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Predicted confusion</title>\n<style>";
@@ -134,7 +138,7 @@ std::string compare_html(const CompareResult& r) {
     for (const std::string& w : r.warnings) s += "<li class=\"warn\">" + xml_text(w) + "</li>\n";
     s += "</ul>\n";
   }
-  s += "<figure>\n" + heat_map_svg(heat_map(r, r.predicted_confusion, "Predicted confusion")) + "</figure>\n";
+  s += "<figure>\n" + heat_map_svg(matrix_heat_map(labels(r), r.predicted_confusion, "Predicted confusion")) + "</figure>\n";
   s += "<h2>Distances</h2>\n" + distance_table(r);
   s += "<h2>ST-SIM</h2>\n" + stsim_table(r);
   s += setup_html(r);

@@ -1,4 +1,5 @@
 #include "study/compare_output.hpp"
+#include "study/compare_output_parts.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -33,6 +34,32 @@ std::string_view model_name(ResponseModel model) {
   }
   return "ideal";
 }
+
+
+
+
+// One cue's distances of every ordered pair, JNDs.
+PerceptionMatrix cue_of(const CueMatrix& cues, std::size_t cue) {
+  PerceptionMatrix m(cues.size());
+  for (std::size_t i = 0; i < cues.size(); ++i) {
+    for (const CueDistances& d : cues[i]) m[i].push_back(d[cue]);
+  }
+  return m;
+}
+
+
+// A CSV field: quoted (RFC 4180) when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
 
 void matrix(JsonWriter& w, const PerceptionMatrix& m) {
   w.begin_array();
@@ -114,15 +141,6 @@ void describe_exploration(JsonWriter& w, const CompareResult& r) {
   w.end_object();
 }
 
-// One cue's distances of every ordered pair, JNDs.
-PerceptionMatrix cue_of(const CueMatrix& cues, std::size_t cue) {
-  PerceptionMatrix m(cues.size());
-  for (std::size_t i = 0; i < cues.size(); ++i) {
-    for (const CueDistances& d : cues[i]) m[i].push_back(d[cue]);
-  }
-  return m;
-}
-
 void describe_model(JsonWriter& w, const CompareResult& r, const std::string& model_file) {
   w.begin_object();
   w.key("model_file");
@@ -142,25 +160,16 @@ void describe_model(JsonWriter& w, const CompareResult& r, const std::string& mo
   w.key("frequency_weber_fraction");
   w.number(kFrequencyWeberFraction);
   w.key("choice_model");
-  w.string("p(j|i) = (1 - lapse) exp(-D_ij / T) / sum_k exp(-D_ik / T) + lapse / n, D = sqrt(sum_c (w_c d_c)^2)");
+  w.string("p(j|i) = (1 - lapse) eta_ij / sum_k eta_ik + lapse / n, eta = Phi(-d'/2) / Phi(d'/2), d'_ij = sqrt(sum_c "
+           "(k w_c d_c,ij / sqrt(1 + (G R_c)^2))^2), k = 0.954, R_c = k w_c (range of the set on cue c)");
+  w.key("context_noise_per_d_prime");
+  w.number(kContextNoisePerDPrime);
   write_discrimination_constants(w, r.discrimination);
   w.key("likely_confused_p");
   w.number(r.choice.likely_confused_p);
   w.end_object();
 }
 
-// A CSV field: quoted (RFC 4180) when it holds a comma, a quote or a line break.
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
-
-}  // namespace
 
 std::string compare_json(const CompareResult& r, const std::string& model_file) {
   JsonWriter w;

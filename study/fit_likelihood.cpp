@@ -47,7 +47,7 @@ double log_likelihood(const std::vector<CueMatrix>& set_cues, const std::vector<
   double ll = 0.0;
   for (std::size_t s = 0; s < set_cues.size(); ++s) {
     if (set_trials(counts[s]) == 0.0) continue;
-    const PerceptionMatrix p = discrimination_confusion(set_cues[s], constants);
+    const PerceptionMatrix p = identification_confusion(set_cues[s], constants);
     for (std::size_t i = 0; i < p.size(); ++i) {
       for (std::size_t j = 0; j < p.size(); ++j) {
         if (counts[s][i][j] > 0.0) ll += counts[s][i][j] * std::log(std::max(p[i][j], 1e-300));

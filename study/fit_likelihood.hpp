@@ -1,14 +1,13 @@
 #pragma once
 // The likelihood that `vimg study fit` maximises (docs/studies.md, "Fitting the model"): each
 // matching trial is one choice among its set's images, and the model gives it the probability
-// p(chosen | presented) of discrimination_confusion over the set's cue distances
-// (primitives/perception/discrimination_choice.hpp). Trials only enter through their counts per
+// p(chosen | presented) of identification_confusion over the set's cue distances
+// (primitives/perception/identification_choice.hpp). Trials only enter through their counts per
 // (presented, chosen) cell, so a likelihood costs one confusion matrix per set whatever the number
 // of trials.
 //
-// The free constants are the lapse rate and the weight of each cue; the temperature stays fixed,
-// because only the ratios w_c / T enter p (a common factor of the weights and of the temperature
-// changes nothing): the fitted weights carry the scale. They are searched on unbounded-looking
+// The free constants are the lapse rate and the weight of each cue (the temperature belongs to
+// two-interval discrimination and does not enter identification): the weights carry the scale. They are searched on unbounded-looking
 // scales within wide boxes: the lapse rate as kMaxFittedLapse * logistic(theta), theta in
 // [-12, 12]; a weight as w0 * exp(theta), theta in +-ln(1000), with w0 its default (1 when the
 // default is 0).
@@ -20,6 +19,7 @@
 #include <vector>
 
 #include "primitives/perception/discrimination_choice.hpp"
+#include "primitives/perception/identification_choice.hpp"
 #include "primitives/perception/discrimination_cues.hpp"
 
 namespace vimg::study {

@@ -122,6 +122,9 @@ StudyReport make_study_report(const ReportInputs& inputs, std::vector<Diagnostic
   if (!inputs.matching.empty()) {
     report.matching = make_matching_report(inputs.matching);
     append_diagnostics(warnings, attach_predictions(*report.matching, inputs.predictions));
+    for (const SetReport& set : report.matching->sets) {
+      if (auto low = low_identification_warning(set)) warnings.push_back(std::move(*low));
+    }
   } else {
     for (const PredictedConfusion& p : inputs.predictions) {
       warnings.push_back(Diagnostic{Diagnostic::Severity::warning, p.source, 0, "no matching trials to compare it with; left out"});

@@ -1,6 +1,7 @@
 #include "study/report_predicted.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 
@@ -57,6 +58,22 @@ std::optional<PredictedComparison> compare_with(const SetReport& set, const Pred
 }
 
 }  // namespace
+
+std::optional<Diagnostic> low_identification_warning(const SetReport& set) {
+  if (!set.predicted) return std::nullopt;
+  const auto& m = set.predicted->predicted;
+  std::size_t lowest = 0;
+  for (std::size_t i = 0; i < m.size(); ++i)
+    if (m[i][i] < m[lowest][lowest]) lowest = i;
+  if (m.empty() || m[lowest][lowest] >= kIdentifiedTarget) return std::nullopt;
+  char share[16];
+  std::snprintf(share, sizeof share, "%.0f %%", 100.0 * m[lowest][lowest]);
+  return Diagnostic{Diagnostic::Severity::warning, set.predicted->source, 0,
+                    "set '" + set.name + "': the prediction identifies '" + set.images[lowest] + "' only " + share +
+                        " of the time (below " + std::to_string(static_cast<int>(100.0 * kIdentifiedTarget)) +
+                        " %); `vimg separate` on the set's images proposes which tactile parameters to change, and how "
+                        "far (docs/separate.md)"};
+}
 
 std::vector<Diagnostic> attach_predictions(MatchingReport& report, const std::vector<PredictedConfusion>& predictions) {
   std::vector<bool> used(predictions.size(), false);

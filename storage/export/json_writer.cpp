@@ -123,6 +123,11 @@ void JsonWriter::null() {
   out_ += "null";
 }
 
+void JsonWriter::boolean(bool value) {
+  before_value();
+  out_ += value ? "true" : "false";
+}
+
 void JsonWriter::number_text(std::string_view json_number) {
   before_value();
   out_.append(json_number);

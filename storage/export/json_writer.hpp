@@ -23,6 +23,8 @@ class JsonWriter {
   void integer(long long value);
   // JSON's null (a value that is undefined, e.g. a statistic of too few data).
   void null();
+  // true or false.
+  void boolean(bool value);
   // A number written exactly as given (e.g. "1.0" where a format's samples write it so); the text
   // must be a JSON number.
   void number_text(std::string_view json_number);

@@ -8,6 +8,8 @@
 // the expectations are computed from the same samples with the model's parts, not from the
 // report's code.
 #include <gtest/gtest.h>
+
+#include "primitives/perception/identification_choice.hpp"
 #include <unistd.h>
 
 #include <algorithm>
@@ -136,7 +138,7 @@ TEST_F(CompareStSim, TheReportsShowThePlainMetricAndTheConfusionIsTheDiscriminat
       EXPECT_NEAR(distance[i][j], combined_distance_jnd(expected_cues[i][j]), 1e-9);
     }
   }
-  const PerceptionMatrix expected = discrimination_confusion(expected_cues);
+  const PerceptionMatrix expected = identification_confusion(expected_cues);
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t j = 0; j < 3; ++j) EXPECT_NEAR(confusion[i][j], expected[i][j], 1e-9) << i << "," << j;
   }

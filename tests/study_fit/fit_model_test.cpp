@@ -28,12 +28,13 @@ CueMatrix cues_of(const std::vector<CueDistances>& points) {
   return m;
 }
 
-// Two sets of four images in the level-pitch-envelope space.
+// Two sets of four images in the level-pitch-envelope space (identified 60-90 % of the time by the
+// known truth: confused enough to inform the weights, distinct enough to inform the lapse rate).
 FitData two_sets() {
   FitData d;
   d.set_names = {"near", "far"};
-  d.set_cues = {cues_of({{0, 0, 0}, {1, 0, 0}, {0, 1.2, 0}, {0.5, 0.5, 1}}),
-                cues_of({{0, 0, 0}, {2, 0.5, 0}, {0.3, 2, 0.5}, {1, 1, 2}})};
+  d.set_cues = {cues_of({{0, 0, 0}, {1.5, 0, 0}, {0, 1.8, 0}, {0.75, 0.75, 1.5}}),
+                cues_of({{0, 0, 0}, {3, 0.75, 0}, {0.45, 3, 0.75}, {1.5, 1.5, 3}})};
   return d;
 }
 
@@ -59,7 +60,7 @@ void simulate(FitData& d, const DiscriminationConstants& truth, std::size_t part
 DiscriminationConstants known_truth() {
   DiscriminationConstants t;
   t.lapse_rate = 0.08;
-  t.cue_weight = {1.6, 0.6, 1.2};
+  t.cue_weight = {2.0, 0.5, 1.4};
   return t;
 }
 
