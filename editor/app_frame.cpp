@@ -65,13 +65,24 @@ void EditorApp::frame() {
                                         profile.response});
   }
 
+  if (auto request = compare_.take_proposal_request()) proposal_.start(std::move(request->first), std::move(request->second));
+
   canvas_.draw(kToolsWidth, top, canvas_w, canvas_h);
   if (playback_.on()) playback_.draw_scope(kToolsWidth, top + canvas_h, canvas_w, scope_h);
   const float props_h = (H - top - kStatusHeight) * 0.62f;
   properties_.draw(kToolsWidth + canvas_w, top, kPropertiesWidth, props_h);
   problems_.draw(kToolsWidth + canvas_w, top + props_h, kPropertiesWidth, H - top - kStatusHeight - props_h,
                  session_.editor(), session_.load_diagnostics(), layout_);
-  compare_.draw(kToolsWidth + 20.0f, top + 20.0f, std::min(640.0f, canvas_w - 40.0f), std::min(420.0f, canvas_h - 40.0f));
+  if (auditioned_) {
+    // While a change is auditioned the canvas is free to rub: the comparison hides, the proposal
+    // shrinks to one line at the canvas's foot.
+    proposal_.draw(kToolsWidth + 20.0f, top + canvas_h - 90.0f, std::min(560.0f, canvas_w - 40.0f), 0.0f, session_.path());
+  } else {
+    compare_.draw(kToolsWidth + 20.0f, top + 20.0f, std::min(640.0f, canvas_w - 40.0f), std::min(420.0f, canvas_h - 40.0f));
+    proposal_.draw(kToolsWidth + 30.0f, top + 30.0f, std::min(680.0f, canvas_w - 40.0f),
+                   std::min(520.0f, canvas_h - 40.0f), session_.path());
+  }
+  if (auto action = proposal_.take_action()) handle_proposal_action(*action);
   audition_.draw(kToolsWidth + 40.0f, top + 40.0f);
   draw_status_bar(W, H);
 
@@ -85,7 +96,7 @@ void EditorApp::frame() {
   SDL_RenderPresent(renderer_);
 
   const DocumentEditor& doc = session_.editor();
-  playback_.follow(doc.image(), doc.change_count());
+  follow_document_or_audition();
   playback_.show_device_messages();
   if (options_.benchmark_frames == 0) {
     const double now = monotonic_s();

@@ -59,6 +59,9 @@ void CompareWindow::start(std::vector<std::filesystem::path> images, study::Comp
   stop();
   image_count_ = images.size();
   actuator_name_ = actuator.name;
+  images_ = images;
+  actuator_ = actuator;
+  propose_requested_ = false;
   {
     const std::lock_guard lock(mutex_);
     result_.reset();
@@ -79,6 +82,12 @@ void CompareWindow::start(std::vector<std::filesystem::path> images, study::Comp
     }
     wake_gui();
   });
+}
+
+std::optional<std::pair<std::vector<std::filesystem::path>, study::CompareActuator>> CompareWindow::take_proposal_request() {
+  if (!propose_requested_) return std::nullopt;
+  propose_requested_ = false;
+  return std::pair{images_, actuator_};
 }
 
 void CompareWindow::draw(float x, float y, float w, float h) {
@@ -128,6 +137,16 @@ void CompareWindow::draw_result(const study::CompareResult& r) {
     ImGui::TextWrapped("%s", r.warnings[k].c_str());
     ImGui::PopStyleColor();
     print_item(layout_, "compare_warning" + std::to_string(k));
+  }
+  const bool images_only = std::all_of(r.inputs.begin(), r.inputs.end(), [](const study::CompareInput& in) {
+    return in.kind == study::CompareInputKind::image;
+  });
+  if (images_only) {
+    if (ImGui::Button("Propose changes")) propose_requested_ = true;
+    print_item(layout_, "propose_button");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Which tactile parameters to change, and how far, so that people tell these images apart (as "
+                        "vimg separate proposes it)");
   }
   ImGui::Spacing();
   ImGui::TextDisabled("rows: presented; columns: chosen; each row sums to 1");

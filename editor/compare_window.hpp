@@ -3,7 +3,8 @@
 // (study/compare.hpp, the same code: the standard exploration of their canvas, the actuator the
 // editor designs for, ST-SIM with the sensation level, Shepard-Luce choice), shown in a window of
 // its own: the predicted confusion matrix (rows presented, columns chosen, cells shaded by p) and
-// one warning per pair likely confused, in the words of `vimg compare`. docs/editor.md.
+// one warning per pair likely confused, in the words of `vimg compare`, and "Propose changes",
+// which hands the images to `vimg separate`'s engine (proposal_window.hpp). docs/editor.md.
 //
 // Threads: start(), draw() and the destructor on the GUI thread. The comparison runs on a worker
 // thread (which renders on every core through run_compare); it hands its result over under a mutex
@@ -14,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "study/compare.hpp"
@@ -34,6 +36,9 @@ class CompareWindow {
   // The window, if open, first placed at (x, y) with size (w, h).
   void draw(float x, float y, float w, float h);
   bool running() const;
+  // The images and actuator of the comparison shown, once "Propose changes" was pressed
+  // (proposal_window.hpp searches what to change).
+  std::optional<std::pair<std::vector<std::filesystem::path>, study::CompareActuator>> take_proposal_request();
 
  private:
   void stop();
@@ -49,6 +54,9 @@ class CompareWindow {
   bool place_ = false;  // place the window on the next frame
   std::size_t image_count_ = 0;
   std::string actuator_name_;
+  std::vector<std::filesystem::path> images_;  // of the comparison under way or shown
+  study::CompareActuator actuator_;
+  bool propose_requested_ = false;
 };
 
 }  // namespace vimg::editor

@@ -50,6 +50,7 @@ EditorApp::EditorApp(EditorOptions options)
       properties_(session_.editor(), notices_, layout_),
       library_(options_.library_dir, layout_),
       compare_(layout_),
+      proposal_(layout_),
       chooser_(layout_, config_dir() / "recent-folders.txt") {
   properties_.set_feel(&playback_.feel());
   touch_settings_path_ = config_dir() / "touch-latency.txt";

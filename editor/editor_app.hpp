@@ -8,11 +8,14 @@
 //   Playback                       playing mode, gesture recording and the oscilloscope
 //   LibraryPanel                   the example and user images
 //   CompareWindow                  the predicted confusion of images chosen in the library
+//   ProposalWindow                 what to change so that people tell them apart (vimg separate)
 //   AuditionWindow                 the saved document served to a phone or tablet on the LAN
 // editor_app.cpp: window, loop and keys; app_frame.cpp: the frame, menu and status bar;
 // app_dialogs.cpp: the dialogs and the file actions they lead to.
 #include <SDL.h>
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +31,7 @@
 #include "editor/playback.hpp"
 #include "editor/problem_list.hpp"
 #include "editor/properties_panel.hpp"
+#include "editor/proposal_window.hpp"
 
 namespace vimg::editor {
 
@@ -68,6 +72,10 @@ class EditorApp {
   void path_chosen(const std::string& path);
   void import_chosen(const std::string& path);  // asks the import options, or opens a vibroimage PNG
   void draw_import_dialog();
+  // app_proposal.cpp: the Proposed changes window's actions (open, apply, apply all, audition)
+  // and what the player plays while a change is auditioned.
+  void handle_proposal_action(const ProposalAction& action);
+  void follow_document_or_audition();
   // The Mode menu's touch-latency choice, kept on this device (storage/touch_settings_file.hpp).
   void load_touch_settings();
   void save_touch_settings();
@@ -82,6 +90,13 @@ class EditorApp {
   ProblemList problems_;
   LibraryPanel library_;
   CompareWindow compare_;
+  ProposalWindow proposal_;
+  // While a proposed change is auditioned (auditioned_): the document with it made, what playing mode plays
+  // instead of the document until playing stops or the document changes.
+  std::optional<Image> auditioned_;
+  std::uint64_t audition_of_change_ = 0;  // the document's change_count the audition was made from
+  std::uint64_t audition_generation_ = 0;
+  std::string audition_label_;
   AuditionWindow audition_{notices_};
   FileChooser chooser_;
   std::filesystem::path touch_settings_path_;

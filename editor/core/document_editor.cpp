@@ -335,6 +335,15 @@ void DocumentEditor::replace_image_settings(const Image& settings) {
   after_change();
 }
 
+void DocumentEditor::replace_tactile_values(const Image& image) {
+  Image next = image_;
+  next.children = image.children;
+  if (next == image_) return;
+  before_change();
+  image_ = std::move(next);
+  after_change();
+}
+
 void DocumentEditor::begin_gesture() {
   if (gesture_start_) return;
   gesture_start_ = current_state();

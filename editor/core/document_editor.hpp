@@ -54,6 +54,9 @@ class DocumentEditor {
   void ungroup_selection();
   void replace_element(const std::string& id, const Element& element);  // property edits
   void replace_image_settings(const Image& settings);  // size, meta, interaction; not children
+  // The children of `image` (the document with a proposed change of `vimg separate` made: the same
+  // elements, other tactile values): one undoable step; nothing when they are the same.
+  void replace_tactile_values(const Image& image);
   // Clamps each value the fixes name into its range (storage/parameter_table.hpp), as it is now:
   // one undoable step for all of them. Returns how many values changed (0: no step).
   std::size_t clamp_values(const std::vector<ClampFix>& fixes);

@@ -11,6 +11,7 @@ usage:
                                         element ID's points (a polygon's vertices or a line's ends)
                                         are these, in order, within 0.6 mm
   gui_check.py box FILE.vimg ID X Y W H  rect SURFACE ID is this box, within 1e-6 mm
+  gui_check.py driven WAV               the drive in WAV is on somewhere (not silent)
 """
 import math
 import struct
@@ -213,6 +214,10 @@ def main(argv):
     cmd = argv[1]
     if cmd == "drawn":
         check_drawn(argv[2], float(argv[3]))
+    elif cmd == "driven":
+        rate, samples = read_wav(argv[2])
+        on = driven_samples(argv[2], samples)
+        print(f"ok: {argv[2]}: the drive is on for {len(on) / rate:.2f} s")
     elif cmd == "same":
         check_same(argv[2], argv[3])
     elif cmd == "pulse":
