@@ -107,7 +107,8 @@ void expect_set_distinct_on_the_lra(const std::vector<fs::path>& set) {
   request.actuator = profile("lra-175hz-drv2605l.xml");
   const CompareResult r = run_compare(request);
   ASSERT_TRUE(r.ok());
-  for (std::size_t i = 0; i < set.size(); ++i) EXPECT_GE(r.predicted_confusion[i][i], 0.9) << r.inputs[i].label;
+  // Measured 97-100 % correct with an LRA (the primitives paper, section 3): every image at 97 % or more.
+  for (std::size_t i = 0; i < set.size(); ++i) EXPECT_GE(r.predicted_confusion[i][i], 0.97) << r.inputs[i].label;
   EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
 }
 
