@@ -3,36 +3,12 @@
 #include <numeric>
 #include <utility>
 
+#include "primitives/random/splitmix64.hpp"
+
 namespace vimg::study {
 namespace {
 
-constexpr std::uint64_t kGolden = 0x9E3779B97F4A7C15ULL;
-
-// splitmix64's output function (Steele, Lea and Flood 2014): a bijection of 64-bit words that
-// mixes every input bit into every output bit.
-std::uint64_t mix64(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
-}
-
-// The splitmix64 generator: the state advances by the golden ratio, each output is mix64 of it.
-class SplitMix64 {
- public:
-  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() { return mix64(state_ += kGolden); }
-  // Uniform in [0, n), n > 0, without modulo bias: draws below 2^64 mod n are rejected.
-  std::uint64_t below(std::uint64_t n) {
-    const std::uint64_t reject_below = (0 - n) % n;  // 2^64 mod n
-    for (;;) {
-      const std::uint64_t r = next();
-      if (r >= reject_below) return r % n;
-    }
-  }
-
- private:
-  std::uint64_t state_;
-};
+constexpr std::uint64_t kGolden = kSplitMixGolden;
 
 // FNV-1a, 64 bits, of the ID's bytes.
 std::uint64_t fnv1a64(std::string_view text) {

@@ -7,18 +7,20 @@
 #include <cstdint>
 #include <span>
 
+#include "primitives/random/splitmix64.hpp"
+
 namespace vimg::player_app {
 
 class WhiteNoise {
  public:
   static constexpr double kMaxRms = 0.57735026918962576;  // 1 / sqrt(3)
 
-  explicit WhiteNoise(double level_rms, std::uint64_t seed = 0x9E3779B97F4A7C15ull);
+  explicit WhiteNoise(double level_rms, std::uint64_t seed = kSplitMixGolden);
   void fill(std::span<float> samples) noexcept;
   double amplitude() const { return amplitude_; }  // a: samples lie in [-a, a]
 
  private:
-  std::uint64_t state_;
+  SplitMix64 random_;  // primitives/random/splitmix64.hpp
   double amplitude_;
 };
 

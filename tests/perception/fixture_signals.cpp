@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "primitives/random/splitmix64.hpp"
+
 namespace vimg::test {
 
 namespace {
@@ -26,26 +28,15 @@ std::vector<std::string> split(const std::string& text, char separator) {
 double number(const std::string& text) { return std::stod(text); }
 std::size_t count(const std::string& text) { return static_cast<std::size_t>(std::stoull(text)); }
 
-std::uint64_t splitmix64(std::uint64_t& state) {
-  state += 0x9E3779B97F4A7C15ULL;
-  std::uint64_t z = state;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
-}
-
 std::vector<double> component(const std::string& kind, std::size_t length, const std::vector<std::string>& p) {
   const std::size_t start = count(p.at(0));
   const std::size_t end = std::min(count(p.at(1)), length);
   std::vector<double> out(length, 0.0);
   const double two_pi = 2.0 * std::numbers::pi;
   if (kind == "noise") {
-    std::uint64_t state = std::stoull(p.at(2));
+    SplitMix64 random(std::stoull(p.at(2)));
     const double a = number(p.at(3));
-    for (std::size_t n = start; n < end; ++n) {
-      const double u = static_cast<double>(splitmix64(state) >> 11) * (1.0 / 9007199254740992.0);
-      out[n] = a * (2.0 * u - 1.0);
-    }
+    for (std::size_t n = start; n < end; ++n) out[n] = a * (2.0 * random.unit() - 1.0);
     return out;
   }
   for (std::size_t n = start; n < end; ++n) {

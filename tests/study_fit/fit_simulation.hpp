@@ -1,8 +1,8 @@
 #pragma once
 // Simulated participants for the fit's tests: choices drawn from a known identification model
 // (p(j | i) of identification_confusion, written out again here from its equation) with a seeded
-// generator that gives the same draws on every platform (splitmix64, 53-bit uniforms; never
-// std::*_distribution, whose output differs between standard libraries).
+// generator that gives the same draws on every platform (the project's splitmix64,
+// primitives/random/splitmix64.hpp; never std::*_distribution).
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -10,23 +10,11 @@
 #include <vector>
 
 #include "primitives/perception/discrimination_choice.hpp"
+#include "primitives/random/splitmix64.hpp"
 
 namespace vimg::fit_test {
 
-class SplitMix {
- public:
-  explicit SplitMix(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
-
- private:
-  std::uint64_t state_;
-};
+using SplitMix = SplitMix64;  // primitives/random/splitmix64.hpp
 
 // The model's choice probabilities of one presented image, from the equation of
 // primitives/perception/identification_choice.hpp:
@@ -58,7 +46,7 @@ inline std::vector<double> choice_row(const CueMatrix& cues, std::size_t present
 
 // An image drawn from `row` (probabilities summing to 1).
 inline std::size_t draw(const std::vector<double>& row, SplitMix& random) {
-  const double u = random.uniform();
+  const double u = random.unit();
   double cumulative = 0.0;
   for (std::size_t j = 0; j < row.size(); ++j) {
     cumulative += row[j];
