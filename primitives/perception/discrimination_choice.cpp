@@ -9,11 +9,6 @@ namespace {
 
 double non_negative(double x) { return std::isnan(x) || x < 0.0 ? 0.0 : x; }
 
-double temperature(const DiscriminationConstants& k) {
-  return k.temperature_jnd > 0.0 && std::isfinite(k.temperature_jnd) ? k.temperature_jnd
-                                                                     : DiscriminationConstants{}.temperature_jnd;
-}
-
 double lapse(const DiscriminationConstants& k) {
   return std::isnan(k.lapse_rate) ? 0.0 : std::clamp(k.lapse_rate, 0.0, 1.0);
 }
@@ -31,8 +26,10 @@ double combined_distance_jnd(const CueDistances& d, const DiscriminationConstant
 
 PerceptionMatrix discrimination_confusion(const CueMatrix& d, const DiscriminationConstants& k) {
   const std::size_t n = d.size();
-  const double t = temperature(k);
+  const double t = k.temperature_jnd;
   const double guess = lapse(k);
+  // No default stands in for an invalid temperature: every cell says the constants were wrong.
+  if (!valid_temperature_jnd(t)) return PerceptionMatrix(n, std::vector<double>(n, std::numeric_limits<double>::quiet_NaN()));
   PerceptionMatrix p(n, std::vector<double>(n, 0.0));
   std::vector<double> distance(n);
   for (std::size_t i = 0; i < n; ++i) {

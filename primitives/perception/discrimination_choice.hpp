@@ -12,6 +12,7 @@
 // Threads: pure functions over caller-owned data.
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "primitives/perception/discrimination_cues.hpp"
 #include "primitives/perception/perception_matrix.hpp"
@@ -31,8 +32,13 @@ struct DiscriminationConstants {
 // sqrt(sum_c (w_c d_c)^2); negative or NaN distances and weights count as 0.
 double combined_distance_jnd(const CueDistances& d, const DiscriminationConstants& k = {});
 
-// d: square [presented][chosen]. A temperature not > 0 counts as the default; the lapse rate is
-// clamped to [0, 1]. Returns the confusion matrix (empty for an empty input).
+// A temperature is > 0 and finite. Where constants are read they are checked, with an error that
+// says so (MODEL.json and a compare report's model: storage/study/perception_model_file.hpp).
+constexpr bool valid_temperature_jnd(double t) { return t > 0.0 && t < std::numeric_limits<double>::infinity(); }
+
+// d: square [presented][chosen]. With an invalid temperature (valid_temperature_jnd) every cell is
+// NaN: no default stands in for it. The lapse rate is clamped to [0, 1]. Returns the confusion matrix
+// (empty for an empty input).
 PerceptionMatrix discrimination_confusion(const CueMatrix& d, const DiscriminationConstants& k = {});
 
 // The confusion of two signals alone, `distance_jnd` apart: a row of the 2 x 2 matrix.

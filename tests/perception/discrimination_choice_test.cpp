@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "primitives/perception/discrimination_choice.hpp"
 
@@ -68,11 +69,15 @@ TEST(DiscriminationChoice, FarApartSetsNeitherUnderflowNorLeaveTheDiagonal) {
   const PerceptionMatrix p = discrimination_confusion(m);
   EXPECT_EQ(p[0][0], 1.0);
   EXPECT_EQ(p[0][1], 0.0);
-  DiscriminationConstants bad;
-  bad.temperature_jnd = -1.0;
-  bad.lapse_rate = 7.0;
-  const PerceptionMatrix q = discrimination_confusion(m, bad);  // default T, every answer a guess
+  DiscriminationConstants guesses;
+  guesses.lapse_rate = 7.0;
+  const PerceptionMatrix q = discrimination_confusion(m, guesses);  // clamped to 1: every answer a guess
   EXPECT_NEAR(q[0][0], 0.5, 1e-12);
+  // No default stands in for an invalid temperature (a fallback to 1 / ln 3 would give 0.5 here).
+  for (const double t : {-1.0, 0.0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+    guesses.temperature_jnd = t;
+    EXPECT_TRUE(std::isnan(discrimination_confusion(m, guesses)[0][0])) << t;
+  }
   EXPECT_TRUE(discrimination_confusion({}).empty());
 }
 
