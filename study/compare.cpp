@@ -166,7 +166,7 @@ CompareResult run_compare(const CompareRequest& request) {
     r.inputs[i].duration_s = static_cast<double>(samples.size()) / kCompareRateHz;
     const std::vector<double> wide(samples.begin(), samples.end());
     samples = {};
-    stsim_features[i] = analyse_stsim(wide);
+    if (request.stsim) stsim_features[i] = analyse_stsim(wide);
     r.features[i] = analyse_discrimination(wide, request.calibration);
     if (request.progress) {
       const std::lock_guard<std::mutex> lock(progress_mutex);
@@ -180,13 +180,15 @@ CompareResult run_compare(const CompareRequest& request) {
 
   // Every pair on every thread (row i: ST-SIM of i against each reference, the cues of i against
   // the later inputs); the same values as stsim_matrix() and cue_matrix().
-  r.stsim.assign(n, std::vector<double>(n, 1.0));
+  if (request.stsim) r.stsim.assign(n, std::vector<double>(n, 1.0));
   r.cues.assign(n, std::vector<CueDistances>(n, CueDistances{}));
   run_tasks(n, threads, [&](std::size_t i, int) {
     for (std::size_t j = 0; j < n; ++j) {
       if (j == i) continue;
-      const auto score = stsim_common_length(stsim_features[i], stsim_features[j]);
-      r.stsim[i][j] = score ? score->value : std::numeric_limits<double>::quiet_NaN();
+      if (request.stsim) {
+        const auto score = stsim_common_length(stsim_features[i], stsim_features[j]);
+        r.stsim[i][j] = score ? score->value : std::numeric_limits<double>::quiet_NaN();
+      }
       if (j > i) r.cues[i][j] = cue_distances(r.features[i], r.features[j]);
     }
   });

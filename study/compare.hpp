@@ -52,6 +52,7 @@ struct CompareRequest {
   // The discrimination model's free constants (docs/perception.md): the confusion comes from them.
   DiscriminationConstants discrimination;
   ChoiceModel choice;                    // likely_confused_p: the warning's threshold
+  bool stsim = true;                     // ST-SIM of every pair (reported, never predicted from); false: `stsim` stays empty
   int threads = 0;                       // <= 0: one per core
   bool (*should_stop)() = nullptr;       // asked between render blocks (SIGINT); null: never
   // Called once per input when its signal is analysed (`analysed` of `total`), from the worker

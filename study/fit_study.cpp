@@ -128,6 +128,7 @@ StudyFitInputs read_study_fit_inputs(const StudyFitRequest& request) {
     compare.inputs = study.sets[s].images;
     compare.actuator = request.actuator;
     compare.discrimination = request.defaults;
+    compare.stsim = false;  // the fit reads the cues only
     compare.should_stop = request.should_stop;
     CompareResult r = run_compare(compare);
     if (r.interrupted) {
