@@ -101,6 +101,7 @@ TactileParameterList parse_tactile_parameter_list(std::string_view text) {
     if (word.empty()) continue;
     const auto p = parse_tactile_parameter(word);
     if (!p) {
+      out.set = {};
       out.error = "unknown parameter '" + std::string(word) +
                   "' (the tactile parameters: period, relief, pattern, gain, frequency, damping)";
       return out;

@@ -40,8 +40,8 @@ using TactileParameterSet = std::array<bool, kTactileParameterCount>;
 TactileParameterSet all_tactile_parameters();
 // "period,pattern" -> {period, pattern}; an error naming the unknown word and the known ones.
 struct TactileParameterList {
-  TactileParameterSet set{};
-  std::string error;  // empty when every word is known
+  TactileParameterSet set{};  // empty when there is an error
+  std::string error;          // empty when every word is known and one is named
 };
 TactileParameterList parse_tactile_parameter_list(std::string_view comma_separated);
 
