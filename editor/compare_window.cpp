@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "editor/core/layout_log.hpp"
+#include "editor/worker_window.hpp"
 
 namespace vimg::editor {
 
@@ -18,26 +19,8 @@ namespace {
 std::atomic<bool> g_stop_requested{false};
 bool stop_requested() { return g_stop_requested.load(std::memory_order_relaxed); }
 
-// The GUI's event loop sleeps until an event comes: the worker sends one when it is done.
-void wake_gui() {
-  SDL_Event e{};
-  e.type = SDL_USEREVENT;
-  SDL_PushEvent(&e);
-}
-
 const ImVec4 kWarningColour(1.0f, 0.85f, 0.4f, 1.0f);
 const ImVec4 kErrorColour(1.0f, 0.45f, 0.4f, 1.0f);
-
-// Dark to the blue of the study report's heat maps as p goes from 0 to 1.
-ImU32 shade(double p) {
-  const float s = static_cast<float>(std::clamp(p, 0.0, 1.0));
-  return ImGui::GetColorU32(ImVec4(0.12f + s * (0.16f - 0.12f), 0.13f + s * (0.38f - 0.13f), 0.16f + s * (0.75f - 0.16f), 1.0f));
-}
-
-void print_item(LayoutLog& layout, const std::string& name) {
-  layout.print(name, ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
-               ImGui::GetItemRectSize().y);
-}
 
 }  // namespace
 
@@ -122,7 +105,7 @@ void CompareWindow::draw_result(const study::CompareResult& r) {
   }
   if (!r.ok()) {
     if (r.interrupted) ImGui::TextUnformatted("Stopped.");
-    print_item(layout_, "compare_failed");
+    print_last_item(layout_, "compare_failed");
     return;
   }
   ImGui::TextWrapped("On %s, explored by %s.", r.actuator.name.c_str(),
@@ -130,20 +113,20 @@ void CompareWindow::draw_result(const study::CompareResult& r) {
   if (r.warnings.empty()) {
     ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "No pair is likely to be confused (p below %.2f).",
                        r.choice.likely_confused_p);
-    print_item(layout_, "compare_no_warning");
+    print_last_item(layout_, "compare_no_warning");
   }
   for (std::size_t k = 0; k < r.warnings.size(); ++k) {
     ImGui::PushStyleColor(ImGuiCol_Text, kWarningColour);
     ImGui::TextWrapped("%s", r.warnings[k].c_str());
     ImGui::PopStyleColor();
-    print_item(layout_, "compare_warning" + std::to_string(k));
+    print_last_item(layout_, "compare_warning" + std::to_string(k));
   }
   const bool images_only = std::all_of(r.inputs.begin(), r.inputs.end(), [](const study::CompareInput& in) {
     return in.kind == study::CompareInputKind::image;
   });
   if (images_only) {
     if (ImGui::Button("Propose changes")) propose_requested_ = true;
-    print_item(layout_, "propose_button");
+    print_last_item(layout_, "propose_button");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Which tactile parameters to change, and how far, so that people tell these images apart (as "
                         "vimg separate proposes it)");
@@ -171,7 +154,7 @@ void CompareWindow::draw_matrix(const study::CompareResult& r) {
     for (std::size_t j = 0; j < r.inputs.size(); ++j) {
       ImGui::TableSetColumnIndex(static_cast<int>(j) + 1);
       const double p = r.predicted_confusion[i][j];
-      ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, shade(p));
+      ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, confusion_shade(p));
       ImGui::Text("%.2f", p);
       if (ImGui::IsItemHovered()) {
         const CueDistances& d = r.cues[i][j];
@@ -183,7 +166,7 @@ void CompareWindow::draw_matrix(const study::CompareResult& r) {
     }
   }
   ImGui::EndTable();
-  print_item(layout_, "compare_matrix");
+  print_last_item(layout_, "compare_matrix");
 }
 
 }  // namespace vimg::editor

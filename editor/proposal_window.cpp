@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "editor/core/layout_log.hpp"
+#include "editor/worker_window.hpp"
 #include "hal/felt_analysis.hpp"
 
 namespace vimg::editor {
@@ -19,25 +20,9 @@ namespace {
 std::atomic<bool> g_stop_requested{false};
 bool stop_requested() { return g_stop_requested.load(std::memory_order_relaxed); }
 
-void wake_gui() {
-  SDL_Event e{};
-  e.type = SDL_USEREVENT;
-  SDL_PushEvent(&e);
-}
-
 const ImVec4 kGood(0.5f, 0.9f, 0.5f, 1.0f);
 const ImVec4 kWarning(1.0f, 0.85f, 0.4f, 1.0f);
 const ImVec4 kError(1.0f, 0.45f, 0.4f, 1.0f);
-
-ImU32 shade(double p) {
-  const float s = static_cast<float>(std::clamp(p, 0.0, 1.0));
-  return ImGui::GetColorU32(ImVec4(0.12f + s * 0.04f, 0.13f + s * 0.25f, 0.16f + s * 0.59f, 1.0f));
-}
-
-void print_item(LayoutLog& layout, const std::string& name) {
-  layout.print(name, ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
-               ImGui::GetItemRectSize().y);
-}
 
 // The editor's font has no arrow: "period 2.2 -> 3.1 mm".
 std::string plain(std::string text) {
@@ -125,7 +110,7 @@ void ProposalWindow::draw(float x, float y, float w, float h, const std::string&
     ImGui::Begin("Auditioning", nullptr, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize);
     ImGui::TextWrapped("Auditioning %s: rub the canvas.", auditioning_.c_str());
     if (ImGui::Button("Stop audition")) action_ = ProposalAction{ProposalAction::Kind::stop_audition, {}, {}, auditioning_};
-    print_item(layout_, "proposal_stop_audition");
+    print_last_item(layout_, "proposal_stop_audition");
     ImGui::End();
     return;
   }
@@ -159,13 +144,13 @@ void ProposalWindow::draw_result(const study::SeparateResult& r, const std::stri
   }
   if (!r.ok()) {
     if (r.interrupted) ImGui::TextUnformatted("Stopped.");
-    print_item(layout_, "proposal_failed");
+    print_last_item(layout_, "proposal_failed");
     return;
   }
   if (r.already_distinct) {
     ImGui::TextColored(kGood, "Every image is already identified at least %.0f %% of the time: nothing to change.",
                        100.0 * r.target);
-    print_item(layout_, "proposal_none");
+    print_last_item(layout_, "proposal_none");
     return;
   }
   if (r.reached) {
@@ -175,14 +160,14 @@ void ProposalWindow::draw_result(const study::SeparateResult& r, const std::stri
     ImGui::TextColored(kWarning, "The target of %.0f %% is out of reach; the best set found:", 100.0 * r.target);
     for (const std::string& l : r.limits) ImGui::BulletText("%s", l.c_str());
   }
-  print_item(layout_, "proposal_ready");
+  print_last_item(layout_, "proposal_ready");
   for (std::size_t i = 0; i < r.images.size(); ++i) draw_image(r.images[i], i, same_file(r.images[i].path, open_document));
   ImGui::Spacing();
   ImGui::TextDisabled("predicted confusion before | after (rows: presented; columns: chosen)");
   draw_matrix("##before", r, r.before.predicted_confusion);
   ImGui::SameLine();
   draw_matrix("##after", r, r.confusion_after);
-  print_item(layout_, "proposal_matrices");
+  print_last_item(layout_, "proposal_matrices");
 }
 
 void ProposalWindow::draw_image(const study::SeparateImage& im, std::size_t index, bool is_open) {
@@ -201,16 +186,16 @@ void ProposalWindow::draw_image(const study::SeparateImage& im, std::size_t inde
   if (!is_open) {
     ImGui::SameLine();
     if (ImGui::SmallButton("Open")) action_ = ProposalAction{ProposalAction::Kind::open, im.path, {}, im.label};
-    print_item(layout_, prefix + "_open");
+    print_last_item(layout_, prefix + "_open");
   } else {
     ImGui::SameLine();
     if (ImGui::SmallButton("Apply all"))
       action_ = ProposalAction{ProposalAction::Kind::apply_all, im.path, im.changes, im.label + ": every change"};
-    print_item(layout_, prefix + "_apply_all");
+    print_last_item(layout_, prefix + "_apply_all");
     ImGui::SameLine();
     if (ImGui::SmallButton("Audition all"))
       action_ = ProposalAction{ProposalAction::Kind::audition, im.path, im.changes, im.label + ": every change"};
-    print_item(layout_, prefix + "_audition_all");
+    print_last_item(layout_, prefix + "_audition_all");
   }
   for (std::size_t k = 0; k < im.changes.size(); ++k) {
     const study::ParameterChange& c = im.changes[k];
@@ -221,11 +206,11 @@ void ProposalWindow::draw_image(const study::SeparateImage& im, std::size_t inde
       ImGui::SameLine();
       if (ImGui::SmallButton("Audition"))
         action_ = ProposalAction{ProposalAction::Kind::audition, im.path, {c}, im.label + ": " + plain(c.text)};
-      print_item(layout_, name + "_audition");
+      print_last_item(layout_, name + "_audition");
       ImGui::SameLine();
       if (ImGui::SmallButton("Apply"))
         action_ = ProposalAction{ProposalAction::Kind::apply, im.path, {c}, im.label + ": " + plain(c.text)};
-      print_item(layout_, name + "_apply");
+      print_last_item(layout_, name + "_apply");
     }
     ImGui::PopID();
   }
@@ -244,7 +229,7 @@ void ProposalWindow::draw_matrix(const char* id, const study::SeparateResult& r,
     for (int j = 0; j < n; ++j) {
       ImGui::TableSetColumnIndex(j);
       const double p = m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
-      ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, shade(p));
+      ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, confusion_shade(p));
       ImGui::Text("%.2f", p);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%s presented, %s chosen: p = %.3f", r.images[static_cast<std::size_t>(i)].label.c_str(),

@@ -112,6 +112,16 @@ inline bool movable(const SeparationRequest& r, std::size_t image, std::size_t p
   return r.present.empty() || r.present[image][p];
 }
 
+// Image i's setting with parameter p at each of `values`, those the space allows, appended to out.
+inline void add_moves(SeparationSpace& space, std::size_t i, const SeparationSetting& now, std::size_t p,
+                      const std::vector<int>& values, std::vector<SeparationCandidate>& out) {
+  for (const int v : values) {
+    SeparationSetting s = now;
+    s[p] = static_cast<std::int8_t>(v);
+    if (space.allowed(i, s)) out.push_back({i, s});
+  }
+}
+
 // Moves of every movable image: the neighbours along each parameter (a choice: every other value);
 // `long_moves`: every value that is not a neighbour instead; `back`: the original value of each
 // moved parameter too; `toward_origin`: only one step toward the original value (a choice: back
@@ -138,11 +148,7 @@ inline std::vector<SeparationCandidate> moves(SeparationSpace& space, const Sepa
           values.push_back(v);
         }
       }
-      for (const int v : values) {
-        SeparationSetting s = state[i];
-        s[p] = static_cast<std::int8_t>(v);
-        if (space.allowed(i, s)) out.push_back({i, s});
-      }
+      add_moves(space, i, state[i], p, values, out);
     }
   }
   return out;
@@ -175,11 +181,7 @@ inline std::vector<SeparationCandidate> exchange_moves(SeparationSpace& space, c
           for (const int v : {now - d, now + d})
             if (v >= range.lowest && v <= range.highest) values.push_back(v);
         }
-        for (const int v : values) {
-          SeparationSetting s = state[i];
-          s[p] = static_cast<std::int8_t>(v);
-          if (space.allowed(i, s)) out.push_back({i, s});
-        }
+        add_moves(space, i, state[i], p, values, out);
       }
     }
   }
