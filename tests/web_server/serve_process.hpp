@@ -37,13 +37,15 @@ inline void write_stand_in_assets(const std::filesystem::path& dir) {
 // The child process itself: `vimg serve ARGS... --port 0` with VIMG_WEB_ASSETS=assets and
 // TMPDIR=tmp, its stdout and stderr on the given descriptors (-1 leaves that one inherited; the
 // child closes nothing else of the test's, every descriptor here is opened close-on-exec). Killed
-// and reaped when it goes out of scope, unless stop_with() did that.
+// and reaped when it goes out of scope, unless stop_with() did that. A `wrapper` (a program and
+// its arguments: strace, prlimit) runs vimg serve in its stead.
 class ServeChild {
  public:
   ServeChild(const std::vector<std::string>& args, const std::filesystem::path& assets, const std::filesystem::path& tmp,
-             int stdout_fd, int stderr_fd = -1) {
+             int stdout_fd, int stderr_fd = -1, const std::vector<std::string>& wrapper = {}) {
     ChildSpec spec;
-    spec.argv = {kVimg, "serve"};
+    spec.argv = wrapper;
+    spec.argv.insert(spec.argv.end(), {kVimg, "serve"});
     spec.argv.insert(spec.argv.end(), args.begin(), args.end());
     spec.argv.insert(spec.argv.end(), {"--port", "0"});
     spec.env = {{"VIMG_WEB_ASSETS", assets.string()}, {"TMPDIR", tmp.string()}};
@@ -58,12 +60,22 @@ class ServeChild {
   ServeChild(const ServeChild&) = delete;
   ServeChild& operator=(const ServeChild&) = delete;
 
+  pid_t pid() const { return pid_; }
+
   // Whether the child has ended (it stays unreaped, for stop_with() or the destructor); a child
   // that was never started has.
   bool ended() const {
     if (pid_ <= 0) return true;
     siginfo_t info{};
     return waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid_;
+  }
+
+  // Waits for the child to end by itself; its exit status (-1 if a signal killed it, or it never started).
+  int wait_for_exit() {
+    if (pid_ <= 0 || reaped_) return -1;
+    const int status = reap_child(pid_);
+    reaped_ = true;
+    return status >= 0 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
 
   // Sends the signal and returns the exit status (-1 if a signal killed it, or it never started).
@@ -83,8 +95,9 @@ class ServeChild {
 // The server with its stdout on a pipe that wait_for_port() reads.
 class ServeProcess {
  public:
-  ServeProcess(const std::vector<std::string>& args, const std::filesystem::path& assets, const std::filesystem::path& tmp)
-      : pipe_(make_pipe()), child_(args, assets, tmp, pipe_.write) {
+  ServeProcess(const std::vector<std::string>& args, const std::filesystem::path& assets, const std::filesystem::path& tmp,
+               const std::vector<std::string>& wrapper = {})
+      : pipe_(make_pipe()), child_(args, assets, tmp, pipe_.write, -1, wrapper) {
     close(pipe_.write);
   }
   ~ServeProcess() {
@@ -115,6 +128,7 @@ class ServeProcess {
   const std::string& printed() const { return out_; }
 
   int stop_with(int signal_number) { return child_.stop_with(signal_number); }
+  ServeChild& child() { return child_; }
 
  private:
   struct Pipe {
