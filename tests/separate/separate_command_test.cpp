@@ -80,6 +80,9 @@ TEST_F(SeparateCommand, HelpAndVersionExitZero) {
 TEST_F(SeparateCommand, FourPeriodsThroughTheLraReachTheTarget) {
   const auto before = vimg("compare " + kFour + " --actuator " + kLra + " --out before.json");
   ASSERT_EQ(before.exit_code, 0) << before.out;
+  EXPECT_NE(before.out.find("`vimg separate` on these images proposes which tactile parameters to change"),
+            std::string::npos)
+      << "vimg compare points to vimg separate when it warns\n" << before.out;
   double lowest = 1.0;
   for (const double p : compare_diagonal(read_json(dir_ / "before.json"))) lowest = std::min(lowest, p);
   EXPECT_LT(lowest, 0.9) << "the example set should be confused";

@@ -204,4 +204,38 @@ TEST(MatchingReport, CorrelationIsUndefinedWhenNothingWasConfusedAndTheReportSay
 }
 
 }  // namespace
+// A set whose prediction identifies an image less than 90 % of the time points to `vimg separate`
+// (docs/separate.md); one at 90 % or more, or without a prediction, does not.
+TEST(MatchingReport, ALowPredictedIdentificationPointsToVimgSeparate) {
+  std::vector<MatchingTrial> trials;
+  for (const std::string image : {"a", "b", "c"}) {
+    MatchingTrial t;
+    t.participant = "p01";
+    t.set = "textures";
+    t.trial = static_cast<int>(trials.size()) + 1;
+    t.presented = t.chosen = image;
+    t.correct = true;
+    trials.push_back(t);
+  }
+  PredictedConfusion low;
+  low.source = "compare.json";
+  low.stems = {"a", "b", "c"};
+  low.matrix = {{0.95, 0.05, 0.0}, {0.2, 0.67, 0.13}, {0.0, 0.05, 0.95}};
+  MatchingReport r = make_matching_report(trials);
+  EXPECT_FALSE(low_identification_warning(r.sets[0])) << "no prediction yet";
+  ASSERT_TRUE(attach_predictions(r, {low}).empty());
+  const auto w = low_identification_warning(r.sets[0]);
+  ASSERT_TRUE(w);
+  EXPECT_EQ(w->file, "compare.json");
+  EXPECT_NE(w->message.find("set 'textures': the prediction identifies 'b' only 67 % of the time (below 90 %)"),
+            std::string::npos)
+      << w->message;
+  EXPECT_NE(w->message.find("vimg separate"), std::string::npos);
+  PredictedConfusion high = low;
+  high.matrix = {{0.95, 0.05, 0.0}, {0.05, 0.9, 0.05}, {0.0, 0.05, 0.95}};
+  MatchingReport distinct = make_matching_report(trials);
+  ASSERT_TRUE(attach_predictions(distinct, {high}).empty());
+  EXPECT_FALSE(low_identification_warning(distinct.sets[0]));
+}
+
 }  // namespace vimg::study
