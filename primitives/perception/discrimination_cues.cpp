@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "primitives/perception/channel_levels.hpp"
 #include "primitives/perception/power_spectrum.hpp"
 #include "primitives/perception/stsim.hpp"
 
@@ -99,7 +100,6 @@ DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8kh
   std::array<double, kBins> mean_excitation{};
   std::array<double, kN> frame{};
   std::array<double, kBins> power{};
-  double best_p = 0.0, best_np = 0.0, best = 0.0;
   for (std::size_t j = 0; j < frames; ++j) {
     const std::ptrdiff_t start = static_cast<std::ptrdiff_t>(j * kHop) - static_cast<std::ptrdiff_t>(kN / 2);
     bool any = false;
@@ -110,24 +110,17 @@ DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8kh
     }
     if (!any) continue;
     detail::hann_power_spectrum(frame, power);
-    double sum_p = 0.0, sum_np = 0.0, sum_e = 0.0;
     for (std::size_t k = 1; k + 1 < kBins; ++k) {
-      const double p = power[k] * gains.pacinian[k];
-      const double np = power[k] * gains.non_pacinian[k];
-      const double e = std::max(p, np);
-      sum_p += p;
-      sum_np += np;
-      sum_e += e;
-      mean_excitation[k] += e;
+      mean_excitation[k] += std::max(power[k] * gains.pacinian[k], power[k] * gains.non_pacinian[k]);
     }
-    best_p = std::max(best_p, sum_p);
-    best_np = std::max(best_np, sum_np);
-    best = std::max(best, sum_e);
   }
-  f.pacinian_level_db = to_db(best_p);
-  f.non_pacinian_level_db = to_db(best_np);
-
-  f.level_db = std::max(0.0, to_db(best));
+  // Level: each channel's, as it sums over time (channel_levels.hpp); felt through the more
+  // sensitive one.
+  const detail::ChannelLevels channels = detail::channel_levels(signal_8khz, calibration, kSlowEnvelopeWindowMs);
+  f.pacinian_level_db = channels.pacinian_db;
+  f.non_pacinian_level_db = channels.non_pacinian_db;
+  f.level_db = std::max({0.0, channels.pacinian_db, channels.non_pacinian_db});
+  f.moment_level_db = std::max({0.0, channels.pacinian_moment_db, channels.non_pacinian_db});
 
   // Envelopes: the Hann-weighted mean of x^2 around each step (fast), and that smoothed again over
   // kSlowEnvelopeWindowMs (slow), in dB relative to the slow one's largest value, floored where
@@ -171,7 +164,7 @@ DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8kh
     }
   }
   const double peak_db = to_db(peak);
-  const auto relative = [&](double mean_square) { return std::max(to_db(mean_square) - peak_db, -f.level_db); };
+  const auto relative = [&](double mean_square) { return std::max(to_db(mean_square) - peak_db, -f.moment_level_db); };
   // A dip: how far the fast envelope falls below the smaller of its largest values in the
   // kDipContextMs before and after (signal on both sides: a gap, not an onset or an end).
   const auto context = static_cast<std::size_t>(kDipContextMs / kEnvelopeStepMs);
@@ -183,7 +176,7 @@ DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8kh
     slow_db[s] = static_cast<float>(relative(slow[s]));
     dips_db[s] = static_cast<float>(std::min(0.0, relative(fast[s]) - relative(std::min(before, after))));
   }
-  f.slow_envelope = envelope_track(std::move(slow_db), static_cast<float>(-f.level_db));
+  f.slow_envelope = envelope_track(std::move(slow_db), static_cast<float>(-f.moment_level_db));
   f.dips = envelope_track(std::move(dips_db), 0.0f);
 
   // Pitch: the excitation-weighted mean of log2 f over the frame-averaged spectrum.
@@ -217,7 +210,7 @@ double track_distance_db(const DiscriminationFeatures& a, const DiscriminationFe
     const std::size_t y_size = ty.db.size();
     const auto tolerance = static_cast<std::size_t>(kTimingToleranceMs / kEnvelopeStepMs);
     const auto felt = [](const DiscriminationFeatures& z, std::size_t s) {
-      return z.level_db + (s < z.slow_envelope.db.size() ? static_cast<double>(z.slow_envelope.high_db[s]) : -z.level_db);
+      return z.moment_level_db + (s < z.slow_envelope.db.size() ? static_cast<double>(z.slow_envelope.high_db[s]) : -z.moment_level_db);
     };
     double worst = 0.0;
     for (std::size_t s = 0; s < steps; ++s) {

@@ -79,6 +79,7 @@ struct EnvelopeTrack {
 
 struct DiscriminationFeatures {
   double level_db = 0.0;                 // felt sensation level of the strongest moment, >= 0
+  double moment_level_db = 0.0;          // the same summed over kSlowEnvelopeWindowMs only: the envelope's scale
   double pacinian_level_db = 0.0;        // the same through the P channel alone (may be < 0)
   double non_pacinian_level_db = 0.0;    // through the NP channel alone (may be < 0)
   double pitch_octaves = 0.0;            // log2 of the centroid frequency in Hz (0 when nothing is felt)
