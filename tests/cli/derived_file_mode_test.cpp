@@ -144,5 +144,16 @@ TEST_F(DerivedFileMode, CompareAndStudyReportTakeTheBitsEveryInputShares) {
   EXPECT_EQ(mode_of("report.json"), kPrivate);
 }
 
+TEST_F(DerivedFileMode, SeparateGivesEachProposalItsImagesBitsAndTheReportTheShared) {
+  // Two copies of one texture: confused, so both are proposed anew.
+  input(kData / "compare" / "surface.vimg", "a.vimg", kGroupRead);
+  input(kData / "compare" / "surface.vimg", "b.vimg", kPrivate);
+  vimg("separate a.vimg b.vimg --out P");
+  EXPECT_EQ(mode_of("P/a.vimg"), kGroupRead);
+  EXPECT_EQ(mode_of("P/b.vimg"), kPrivate);
+  EXPECT_EQ(mode_of("P/separate.json"), kPrivate);
+  EXPECT_EQ(mode_of("P/separate.html"), kPrivate);
+}
+
 }  // namespace
 }  // namespace vimg
