@@ -81,7 +81,7 @@ int run_compare_command(const CompareArgs& a) {
   if (!actuator) return kExitFailure;
   request.actuator = std::move(*actuator);
   if (!a.model.empty()) {
-    const auto model = load_model_argument(a.model);
+    const auto model = load_model_argument(a.model, request.actuator);
     if (!model) return kExitFailure;
     request.discrimination = model->constants;
   }

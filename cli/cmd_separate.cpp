@@ -139,7 +139,7 @@ int run_separate_command(const SeparateArgs& a) {
     q.felt_band = felt->describe();
   }
   if (!a.model.empty()) {
-    const auto model = load_model_argument(a.model);
+    const auto model = load_model_argument(a.model, q.actuator);
     if (!model) return kExitFailure;
     q.discrimination = model->constants;
   }

@@ -1,6 +1,7 @@
-// `vimg study fit TRIALS... --study STUDY.xml [--actuator P] --out MODEL.json`: the discrimination
-// model's constants fitted by maximum likelihood on the matching test's trials, with 95 % profile
-// intervals and the leave-one-participant-out ln-likelihood against the default constants
+// `vimg study fit TRIALS... --study STUDY.xml [--actuator P] --out MODEL.json`: the identification
+// model's constants fitted by maximum likelihood on the matching test's trials, with 95 % intervals
+// by a bootstrap over participants (and the pooled trials' profile intervals) and the
+// leave-one-participant-out ln-likelihood against the defaults with a fitted lapse rate
 // (docs/studies.md, "Fitting the model"; study/fit_study.hpp reads, study/fit_model.hpp fits).
 #include <cmath>
 #include <cstdio>
@@ -32,31 +33,52 @@ struct FitArgs {
 
 void progress(const std::string& line) { std::fprintf(stderr, "%s: %s\n", kProgram, line.c_str()); }
 
-std::string interval_text(const study::ConstantFit& c) {
+std::string range_text(double lower, double upper, bool lower_open) {
   char text[96];
-  if (!c.fitted) return c.name == "temperature_jnd" ? "fixed (the weights carry the scale)" : "kept its default (see the warnings)";
-  std::snprintf(text, sizeof text, "[%.4g, %.4g]%s", c.lower, c.upper, c.lower_at_edge ? " (at most)" : "");
+  if (std::isinf(upper)) {
+    std::snprintf(text, sizeof text, "at least %.4g", lower);
+  } else if (lower_open) {
+    std::snprintf(text, sizeof text, "at most %.4g", upper);
+  } else {
+    std::snprintf(text, sizeof text, "[%.4g, %.4g]", lower, upper);
+  }
   return text;
+}
+
+std::string interval_text(const study::ConstantFit& c) {
+  if (!c.fitted) return c.name == "temperature_jnd" ? "fixed (the weights carry the scale)" : "kept its default (see the warnings)";
+  return range_text(c.lower, c.upper, c.lower_open);
+}
+
+std::string profile_text(const study::ConstantFit& c) {
+  if (!c.fitted) return "";
+  return range_text(c.profile_lower, c.profile_upper, c.profile_lower == 0.0);
 }
 
 void print_fit(const study::ModelFit& fit, const study::FitData& data, std::size_t sets, const std::string& actuator) {
   std::printf("%s: %.0f trials of %zu participants in %zu set%s, through the actuator %s\n", kProgram, fit.trials,
               data.participants.size(), sets, sets == 1 ? "" : "s", actuator.c_str());
-  std::printf("\n%-22s %10s %10s  %s\n", "constant", "default", "fitted", "95 % interval (profile likelihood)");
+  std::printf("\n%-22s %10s %10s  %-28s %s\n", "constant", "default", "fitted", "95 % (bootstrap, participants)",
+              "95 % (profile, pooled trials)");
   for (const study::ConstantFit& c : fit.report) {
-    std::printf("%-22s %10.4g %10.4g  %s\n", c.name.c_str(), c.default_value, c.value, interval_text(c).c_str());
+    std::printf("%-22s %10.4g %10.4g  %-28s %s\n", c.name.c_str(), c.default_value, c.value, interval_text(c).c_str(),
+                profile_text(c).c_str());
   }
-  std::printf("\nln-likelihood of all trials: fitted %.2f, default %.2f, guessing %.2f\n", fit.ll_fitted, fit.ll_default,
-              fit.ll_chance);
-  std::printf("\nLeave one participant out: each participant's trials under the constants fitted on the others\n");
-  std::printf("%-16s %8s %12s %12s %12s\n", "participant", "trials", "fitted", "default", "guessing");
+  std::printf("(%zu bootstrap resamples of the participants)\n", fit.bootstrap_replicates);
+  std::printf("\nln-likelihood of all trials: fitted %.2f, baseline (the defaults, lapse rate fitted: %.4g) %.2f, "
+              "defaults %.2f, guessing %.2f\n",
+              fit.ll_fitted, fit.baseline.lapse_rate, fit.ll_baseline, fit.ll_default, fit.ll_chance);
+  std::printf("\nLeave one participant out: each participant's trials under what was chosen and fitted on the others\n");
+  std::printf("%-16s %8s %12s %12s %12s %12s\n", "participant", "trials", "fitted", "baseline", "defaults", "guessing");
   for (const study::HeldOutParticipant& h : fit.held_out) {
-    std::printf("%-16s %8.0f %12.2f %12.2f %12.2f\n", h.participant.c_str(), h.trials, h.ll_fitted, h.ll_default, h.ll_chance);
+    std::printf("%-16s %8.0f %12.2f %12.2f %12.2f %12.2f\n", h.participant.c_str(), h.trials, h.ll_fitted, h.ll_baseline,
+                h.ll_default, h.ll_chance);
   }
-  std::printf("%-16s %8.0f %12.2f %12.2f %12.2f\n", "total", fit.trials, fit.held_out_ll_fitted, fit.held_out_ll_default,
-              fit.held_out_ll_chance);
-  const double gain = fit.held_out_ll_fitted - fit.held_out_ll_default;
-  std::printf("held out, the fitted constants %s the defaults by %.2f (ln-likelihood per trial %+.4f)\n",
+  std::printf("%-16s %8.0f %12.2f %12.2f %12.2f %12.2f\n", "total", fit.trials, fit.held_out_ll_fitted, fit.held_out_ll_baseline,
+              fit.held_out_ll_default, fit.held_out_ll_chance);
+  const double gain = fit.held_out_ll_fitted - fit.held_out_ll_baseline;
+  std::printf("held out, the fitted constants %s the baseline (the defaults with a fitted lapse rate) by %.2f "
+              "(ln-likelihood per trial %+.4f)\n",
               gain >= 0.0 ? "beat" : "fall behind", std::abs(gain), gain / fit.trials);
 }
 
@@ -88,7 +110,7 @@ int run_fit(const FitArgs& a) {
   study::FitOptions options;
   options.defaults = request.defaults;
   options.progress = progress;
-  const study::ModelFit fit = study::fit_discrimination_model(inputs.data, options);
+  const study::ModelFit fit = study::fit_identification_model(inputs.data, options);
   for (const std::string& w : fit.warnings) std::fprintf(stderr, "%s: warning: %s\n", kProgram, w.c_str());
   print_fit(fit, inputs.data, inputs.sets_with_trials, actuator->name);
 
@@ -105,7 +127,7 @@ int run_fit(const FitArgs& a) {
 
 void add_study_fit(CLI::App& study, int& exit_code) {
   CLI::App* fit = study.add_subcommand(
-      "fit", "fit the discrimination model's constants on the matching test's trials (maximum likelihood; docs/studies.md)");
+      "fit", "fit the identification model's constants on the matching test's trials (maximum likelihood; docs/studies.md)");
   fit->set_version_flag("--version", std::string(cmdline::version()), "print the version and exit");
   auto a = std::make_shared<FitArgs>();
   fit->add_option("TRIALS", a->trials, "the matching test's trial files (CSV, one per participant) of the study")->required();
@@ -117,10 +139,12 @@ void add_study_fit(CLI::App& study, int& exit_code) {
   fit->add_option("--out", a->out, "MODEL.json for vimg compare --model, written atomically")->required();
   fit->footer(
       "Each set's images are rendered as vimg compare renders them. Free: the lapse rate and each cue's weight (the "
-      "temperature stays at its default: only weight / temperature enters the model). 95 % profile-likelihood intervals; a "
-      "constant the trials cannot identify keeps its default with a warning. Leave-one-participant-out ln-likelihood against "
-      "the default constants. Refused (exit 1, nothing written): a trial of another study, no trials, one participant, fewer "
-      "than 10 trials per free constant.");
+      "temperature belongs to two-interval discrimination and stays at its default). 95 % intervals by a bootstrap over "
+      "participants (1000 resamples), beside the profile-likelihood intervals of the pooled trials; a weight the trials bound "
+      "from below only is 'at least' its bound and held at its default, or at the bound when they reject the default; a "
+      "constant the trials say nothing about keeps its default with a warning. Leave one participant out, everything chosen "
+      "and fitted on the others, against the defaults with a fitted lapse rate. Refused (exit 1, nothing written): a trial of "
+      "another study, no trials, one participant, fewer than 10 trials per free constant.");
   fit->callback([a, &exit_code] { exit_code = run_fit(*a); });
 }
 

@@ -14,11 +14,10 @@ double weight_scale(const DiscriminationConstants& defaults, std::size_t cue) {
 
 }  // namespace
 
-std::vector<ChoiceCounts> pooled_counts(const FitData& data, std::size_t left_out) {
+std::vector<ChoiceCounts> pooled_counts_of(const FitData& data, std::span<const std::size_t> chosen) {
   std::vector<ChoiceCounts> pooled;
   for (const CueMatrix& cues : data.set_cues) pooled.emplace_back(cues.size(), std::vector<double>(cues.size(), 0.0));
-  for (std::size_t p = 0; p < data.counts.size(); ++p) {
-    if (p == left_out) continue;
+  for (const std::size_t p : chosen) {
     for (std::size_t s = 0; s < pooled.size(); ++s) {
       for (std::size_t i = 0; i < pooled[s].size(); ++i) {
         for (std::size_t j = 0; j < pooled[s].size(); ++j) pooled[s][i][j] += data.counts[p][s][i][j];
@@ -26,6 +25,14 @@ std::vector<ChoiceCounts> pooled_counts(const FitData& data, std::size_t left_ou
     }
   }
   return pooled;
+}
+
+std::vector<ChoiceCounts> pooled_counts(const FitData& data, std::size_t left_out) {
+  std::vector<std::size_t> chosen;
+  for (std::size_t p = 0; p < data.counts.size(); ++p) {
+    if (p != left_out) chosen.push_back(p);
+  }
+  return pooled_counts_of(data, chosen);
 }
 
 double set_trials(const ChoiceCounts& set) {

@@ -38,6 +38,9 @@ struct FitData {
 
 // The counts of every participant but `left_out` (every participant when it is out of range), per set.
 std::vector<ChoiceCounts> pooled_counts(const FitData& data, std::size_t left_out = static_cast<std::size_t>(-1));
+// The counts of the participants `chosen` (indices into FitData::participants; one drawn twice
+// counts twice), per set: a bootstrap resample.
+std::vector<ChoiceCounts> pooled_counts_of(const FitData& data, std::span<const std::size_t> chosen);
 // The trials of one set, and of every set.
 double set_trials(const ChoiceCounts& set);
 double total_trials(const std::vector<ChoiceCounts>& counts);

@@ -1,21 +1,20 @@
 #pragma once
 // `vimg study fit`'s statistics (docs/studies.md, "Fitting the model"): the maximum-likelihood
-// constants of the discrimination model on the trials (study/fit_likelihood.hpp), their 95 %
-// profile-likelihood intervals, the constants the data cannot identify, and the
-// leave-one-participant-out log-likelihood against the default constants.
+// constants of the identification model on the trials (study/fit_likelihood.hpp), what the trials
+// identify (study/fit_search.hpp), the 95 % intervals by a bootstrap over participants
+// (study/fit_bootstrap.hpp) beside the profile-likelihood ones of the pooled trials, and
+// leave-one-participant-out against a baseline.
 //
-//   - Free: the lapse rate and the weight of every cue that separates some pair of the sets with
-//     trials (a weight no pair exercises keeps its default, with a warning). The temperature is
-//     fixed at its default: only w_c / T enters the model, so the weights carry the scale.
-//   - Fit: Nelder-Mead (study/fit_nelder_mead.hpp) on the search coordinates from the defaults.
-//   - Interval: where the profile ln-likelihood (the others re-fitted) falls 1.92 below its maximum
-//     (chi-square, 1 degree of freedom, 95 %; Venzon & Moolgavkar 1988), by bisection. A side that
-//     stays within 1.92 up to the box's edge ends there: at the lower edge this says "at most" (a
-//     lapse rate or a weight of zero is a real value); at the upper edge the data cannot identify
-//     the constant, which then keeps its default (a warning names it) and the rest are fitted again.
-//   - Leave one participant out: for each participant, the constants fitted (the same free set) on
-//     everyone else, and the held-out participant's trials' ln-likelihood under them, under the
-//     defaults and under guessing.
+//   - Stated interval: the bootstrap's percentiles. An end is open (a lapse rate of 0 or 0.5, a
+//     weight of 0 or unbounded) when the bootstrap's percentile or the profile reaches the search
+//     box's edge on that side: "at most" below, "at least" above.
+//   - Baseline: the default constants with the lapse rate fitted on the same trials (the defaults
+//     with a lapse rate of 0 lose to anything that allows a stray wrong answer).
+//   - Leave one participant out: for each participant, everything chosen and fitted on the others
+//     alone (which constants are free, which are held at a lower bound, the start: the defaults),
+//     the baseline's lapse rate too; then the held-out participant's trials scored under the
+//     constants so fitted, under the baseline, and under guessing. Nothing of the held-out
+//     participant enters any choice.
 //
 // Threads: pure; runs on the caller's thread (progress is reported through a callback).
 #include <cstddef>
@@ -23,48 +22,58 @@
 #include <string>
 #include <vector>
 
+#include "study/fit_bootstrap.hpp"
 #include "study/fit_likelihood.hpp"
+#include "study/fit_search.hpp"
 
 namespace vimg::study {
 
-inline constexpr double kProfileDrop95 = 1.9207294103470;  // chi2.ppf(0.95, 1) / 2
-
 struct ConstantFit {
-  std::string name;             // fit_constant_name(k), or "temperature_jnd"
-  double value = 0.0;           // fitted, or the default when not fitted
+  std::string name;            // fit_constant_name(k), or "temperature_jnd"
+  double value = 0.0;          // fitted (or held at a lower bound), or the default when not fitted
   double default_value = 0.0;
-  bool fitted = false;
-  double lower = 0.0, upper = 0.0;  // the 95 % interval (fitted constants only)
-  bool lower_at_edge = false;       // the interval runs to the search box's lower edge
+  bool fitted = false;         // identified by the trials
+  bool at_least = false;       // a weight bounded from below only: held (fit_search.hpp)
+  // The stated 95 % interval (bootstrap over participants); upper is +infinity when unbounded.
+  double lower = 0.0, upper = 0.0;
+  bool lower_open = false, upper_open = false;  // at the box's edge (by the bootstrap or the profile)
+  // The 95 % profile-likelihood interval of the pooled trials (upper +infinity when unbounded).
+  double profile_lower = 0.0, profile_upper = 0.0;
 };
 
 struct HeldOutParticipant {
   std::string participant;
   double trials = 0.0;
-  double ll_fitted = 0.0;   // under the constants fitted on the other participants
-  double ll_default = 0.0;  // under the default constants
-  double ll_chance = 0.0;   // guessing
+  DiscriminationConstants constants;  // chosen and fitted on the other participants alone
+  double ll_fitted = 0.0;    // under `constants`
+  double ll_baseline = 0.0;  // under the defaults with the lapse rate fitted on the others
+  double ll_default = 0.0;   // under the defaults as they are
+  double ll_chance = 0.0;    // guessing
 };
 
 struct ModelFit {
-  DiscriminationConstants constants;  // the defaults with the fitted constants set
+  DiscriminationConstants constants;  // the defaults with the identified constants set
   DiscriminationConstants defaults;
+  DiscriminationConstants baseline;   // the defaults with the lapse rate fitted on all trials
   std::vector<ConstantFit> report;    // temperature, lapse rate, each cue's weight (in that order)
+  std::size_t bootstrap_replicates = 0;
   double trials = 0.0;
-  double ll_fitted = 0.0, ll_default = 0.0, ll_chance = 0.0;  // on all trials (in sample)
-  std::vector<HeldOutParticipant> held_out;                  // in the order of FitData::participants
-  double held_out_ll_fitted = 0.0, held_out_ll_default = 0.0, held_out_ll_chance = 0.0;  // their sums
-  std::vector<std::string> warnings;  // a constant kept at its default, and why
+  double ll_fitted = 0.0, ll_baseline = 0.0, ll_default = 0.0, ll_chance = 0.0;  // on all trials (in sample)
+  std::vector<HeldOutParticipant> held_out;  // in the order of FitData::participants
+  double held_out_ll_fitted = 0.0, held_out_ll_baseline = 0.0, held_out_ll_default = 0.0,
+         held_out_ll_chance = 0.0;  // their sums
+  std::vector<std::string> warnings;  // a constant kept at its default or held at a bound, and why
 };
 
 struct FitOptions {
   DiscriminationConstants defaults;
+  BootstrapOptions bootstrap;
   // Called with a line of progress ("profile interval of lapse_rate (1 of 5)"); null: silent.
   void (*progress)(const std::string& line) = nullptr;
 };
 
 // Needs at least one trial; the caller refuses too little data first (fit_refusal).
-ModelFit fit_discrimination_model(const FitData& data, const FitOptions& options);
+ModelFit fit_identification_model(const FitData& data, const FitOptions& options);
 
 // Why `data` cannot be fitted, or nothing: no trials, fewer than 2 participants (nobody to hold out),
 // fewer than kMinTrialsPerFreeConstant trials per free constant.

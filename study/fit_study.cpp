@@ -145,18 +145,23 @@ StudyFitInputs read_study_fit_inputs(const StudyFitRequest& request) {
 PerceptionModel perception_model_of(const ModelFit& fit, const StudyFitRequest& request, const FitData& data) {
   PerceptionModel m;
   m.constants = fit.constants;
+  m.bootstrap_replicates = fit.bootstrap_replicates;
   for (const ConstantFit& c : fit.report) {
     if (!c.fitted) continue;
     m.fitted.push_back(c.name);
-    m.intervals.push_back({c.name, c.lower, c.upper});
+    m.intervals.push_back({c.name, c.lower, c.upper, c.profile_lower, c.profile_upper});
   }
   m.study = request.study.string();
-  m.actuator = request.actuator.file.empty() ? request.actuator.name : request.actuator.file;
+  m.actuator.given = request.actuator.file.empty() ? request.actuator.name : request.actuator.file;
+  m.actuator.name = request.actuator.name;
+  m.actuator.response = request.actuator.response;
   for (const auto& f : request.trial_files) m.trial_files.push_back(f.string());
   m.participants = data.participants.size();
-  m.in_sample = {"", fit.trials, fit.ll_fitted, fit.ll_default, fit.ll_chance};
-  for (const HeldOutParticipant& h : fit.held_out) m.held_out.push_back({h.participant, h.trials, h.ll_fitted, h.ll_default, h.ll_chance});
-  m.held_out_total = {"", fit.trials, fit.held_out_ll_fitted, fit.held_out_ll_default, fit.held_out_ll_chance};
+  m.in_sample = {"", fit.trials, fit.ll_fitted, fit.ll_baseline, fit.ll_default, fit.ll_chance};
+  for (const HeldOutParticipant& h : fit.held_out)
+    m.held_out.push_back({h.participant, h.trials, h.ll_fitted, h.ll_baseline, h.ll_default, h.ll_chance});
+  m.held_out_total = {"", fit.trials, fit.held_out_ll_fitted, fit.held_out_ll_baseline, fit.held_out_ll_default,
+                      fit.held_out_ll_chance};
   m.warnings = fit.warnings;
   return m;
 }

@@ -1,7 +1,9 @@
 #include "storage/study/perception_model_file.hpp"
 
 #include <cmath>
+#include <iterator>
 
+#include "storage/actuator_profile.hpp"
 #include "storage/export/json_writer.hpp"
 #include "storage/json_checker.hpp"
 #include "storage/json_reader.hpp"
@@ -22,6 +24,8 @@ void likelihoods(JsonWriter& w, const ModelLikelihoods& l) {
   w.number(l.trials);
   w.key("fitted");
   w.number(l.fitted);
+  w.key("baseline");
+  w.number(l.baseline);
   w.key("default");
   w.number(l.defaults);
   w.key("chance");
@@ -33,6 +37,37 @@ void strings(JsonWriter& w, const std::vector<std::string>& texts) {
   w.begin_array();
   for (const std::string& t : texts) w.string(t);
   w.end_array();
+}
+
+// [lower, upper]; an infinite end is null.
+void interval(JsonWriter& w, double lower, double upper) {
+  w.begin_array();
+  for (const double end : {lower, upper}) {
+    if (std::isfinite(end)) {
+      w.number(end);
+    } else {
+      w.null();
+    }
+  }
+  w.end_array();
+}
+
+constexpr const char* kResponseNumbers[] = {"resonance_hz", "q", "low_hz", "high_hz", "spin_up_s", "spin_down_s"};
+
+double& response_number(ResponseParams& r, std::size_t k) {
+  double* fields[] = {&r.resonance_hz, &r.q, &r.low_hz, &r.high_hz, &r.spin_up_s, &r.spin_down_s};
+  return *fields[k];
+}
+
+void response(JsonWriter& w, ResponseParams r) {
+  w.begin_object();
+  w.key("model");
+  w.string(to_string(r.model));
+  for (std::size_t k = 0; k < std::size(kResponseNumbers); ++k) {
+    w.key(kResponseNumbers[k]);
+    w.number(response_number(r, k));
+  }
+  w.end_object();
 }
 
 const JsonValue* find_member(JsonChecker& check, const JsonValue& object, std::string_view key, const std::string& where) {
@@ -97,10 +132,44 @@ class Reader : public JsonChecker {
     const JsonValue* f = root.find("fitted_on");
     if (!f) return true;
     if (!expect(*f, JsonValue::Kind::object, "\"fitted_on\"")) return false;
-    const JsonValue* study = f->find("study");
-    if (!study) return true;
-    if (!expect(*study, JsonValue::Kind::string, "\"study\" of \"fitted_on\"")) return false;
-    out.study = study->text;
+    if (!optional_string(*f, "study", out.study) || !optional_string(*f, "actuator", out.actuator.given) ||
+        !optional_string(*f, "actuator_name", out.actuator.name))
+      return false;
+    if (const JsonValue* given = f->find("actuator")) out.actuator.line = given->line;
+    const JsonValue* r = f->find("actuator_response");
+    if (!r) return true;
+    ResponseParams params;
+    if (!actuator_response(*r, params)) return false;
+    out.actuator.response = params;
+    if (out.actuator.line == 0) out.actuator.line = r->line;
+    return true;
+  }
+
+ private:
+  bool optional_string(const JsonValue& object, std::string_view key, std::string& out) {
+    const JsonValue* v = object.find(key);
+    if (!v) return true;
+    if (!expect(*v, JsonValue::Kind::string, "\"" + std::string(key) + "\" of \"fitted_on\"")) return false;
+    out = v->text;
+    return true;
+  }
+
+  // {"model": "lra", "resonance_hz": ..., ...}: every key, each number > 0.
+  bool actuator_response(const JsonValue& r, ResponseParams& out) {
+    if (!expect(r, JsonValue::Kind::object, "\"actuator_response\"")) return false;
+    const JsonValue* model = member(r, "model", "\"actuator_response\"");
+    if (!model || !expect(*model, JsonValue::Kind::string, "\"model\" of \"actuator_response\"")) return false;
+    bool known = false;
+    for (const ResponseModel m : {ResponseModel::ideal, ResponseModel::lra, ResponseModel::erm, ResponseModel::voice_coil}) {
+      if (model->text == to_string(m)) out.model = m, known = true;
+    }
+    if (!known)
+      return fail(model->line, "unknown actuator model \"" + escape_input(model->text) + "\" (the models are ideal, lra, erm, voice_coil)");
+    for (std::size_t k = 0; k < std::size(kResponseNumbers); ++k) {
+      const JsonValue* v = member(r, kResponseNumbers[k], "\"actuator_response\"");
+      if (!v || !in_range(*this, *v, "\"" + std::string(kResponseNumbers[k]) + "\"", 0.0, true, INFINITY, response_number(out, k)))
+        return false;
+    }
     return true;
   }
 
@@ -163,15 +232,21 @@ std::string perception_model_json(const PerceptionModel& m) {
   w.key("confidence");
   w.number(m.interval_confidence);
   w.key("method");
-  w.string("profile likelihood");
+  w.string("bootstrap over participants (percentile)");
+  w.key("replicates");
+  w.integer(static_cast<long long>(m.bootstrap_replicates));
   w.key("bounds");
   w.begin_object();
   for (const ModelInterval& i : m.intervals) {
     w.key(i.constant);
-    w.begin_array();
-    w.number(i.lower);
-    w.number(i.upper);
-    w.end_array();
+    interval(w, i.lower, i.upper);
+  }
+  w.end_object();
+  w.key("profile_bounds");
+  w.begin_object();
+  for (const ModelInterval& i : m.intervals) {
+    w.key(i.constant);
+    interval(w, i.profile_lower, i.profile_upper);
   }
   w.end_object();
   w.end_object();
@@ -180,7 +255,15 @@ std::string perception_model_json(const PerceptionModel& m) {
   w.key("study");
   w.string(m.study);
   w.key("actuator");
-  w.string(m.actuator);
+  w.string(m.actuator.given);
+  if (!m.actuator.name.empty()) {
+    w.key("actuator_name");
+    w.string(m.actuator.name);
+  }
+  if (m.actuator.response) {
+    w.key("actuator_response");
+    response(w, *m.actuator.response);
+  }
   w.key("trial_files");
   strings(w, m.trial_files);
   w.key("participants");

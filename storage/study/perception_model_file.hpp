@@ -1,6 +1,6 @@
 #pragma once
-// MODEL.json: the constants of the discrimination model that `vimg study fit` wrote and
-// `vimg compare --model` reads (docs/format.md "Perception model file"). Versioned JSON:
+// MODEL.json: the constants of the identification model that `vimg study fit` wrote and
+// `vimg compare --model` and `vimg separate --model` read (docs/format.md A9). Versioned JSON:
 //
 //   {
 //     "format": "vimg-perception-model",
@@ -8,18 +8,26 @@
 //     "constants": {"temperature_jnd": 0.91, "lapse_rate": 0.04,
 //                   "cue_weight": {"level": 1.3, "pitch": 0.7, "envelope": 1}},
 //     "fitted": ["lapse_rate", "cue_weight.level", ...],
-//     "intervals": {"confidence": 0.95, "method": "profile likelihood", "bounds": {"lapse_rate": [0.01, 0.08], ...}},
-//     "fitted_on": {"study": "study.xml", "actuator": "ideal", "trial_files": [...], "participants": 4, "trials": 480,
-//                   "log_likelihood": {"fitted": -300.1, "default": -410.2, "chance": -665.4}},
-//     "leave_one_participant_out": {"participants": [{"participant": "P1", "trials": 120, "fitted": ..., "default": ...,
-//                                   "chance": ...}, ...], "total": {"trials": 480, "fitted": ..., "default": ..., "chance": ...}},
+//     "intervals": {"confidence": 0.95, "method": "bootstrap over participants (percentile)", "replicates": 1000,
+//                   "bounds": {"lapse_rate": [0.01, 0.08], "cue_weight.pitch": [1.8, null], ...},
+//                   "profile_bounds": {...}},
+//     "fitted_on": {"study": "study.xml", "actuator": "lra-175hz-drv2605l", "actuator_name": "...",
+//                   "actuator_response": {"model": "lra", "resonance_hz": 175, "q": 10, "low_hz": 50,
+//                                         "high_hz": 500, "spin_up_s": 0.03, "spin_down_s": 0.045},
+//                   "trial_files": [...], "participants": 4, "trials": 480,
+//                   "log_likelihood": {"fitted": -300.1, "baseline": -330.4, "default": -410.2, "chance": -665.4}},
+//     "leave_one_participant_out": {"participants": [{"participant": "P1", "trials": 120, "fitted": ..., "baseline": ...,
+//                                   "default": ..., "chance": ...}, ...], "total": {...}},
 //     "warnings": ["cue_weight.pitch: ..."]
 //   }
 //
+// An interval's end is null when unbounded (a weight the trials bound from below only).
 // The reader needs `format`, `version` and `constants` (every constant, every cue by name, nothing
-// else in it) and reads `fitted_on.study` when there; the other keys are the fit's record and are
-// not read. A file of a later version is refused (this reader knows version 1 only). Strict JSON
-// (storage/json_reader.hpp), at most kMaxPerceptionModelBytes; every problem is `FILE:LINE: error`.
+// else in it) and reads `fitted_on`'s `study`, `actuator`, `actuator_name` and `actuator_response`
+// when there (a file of an older vimg has no `actuator_name` or `actuator_response`: it still
+// reads); the other keys are the fit's record and are not read. A file of a later version is
+// refused (this reader knows version 1 only). Strict JSON (storage/json_reader.hpp), at most
+// kMaxPerceptionModelBytes; every problem is `FILE:LINE: error`.
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -27,6 +35,7 @@
 #include <string_view>
 #include <vector>
 
+#include "primitives/actuator/response_params.hpp"
 #include "primitives/perception/discrimination_choice.hpp"
 #include "storage/diagnostic.hpp"
 #include "storage/limits.hpp"
@@ -39,23 +48,34 @@ inline constexpr std::size_t kMaxPerceptionModelBytes = 1 * kMiB;
 
 struct ModelInterval {
   std::string constant;  // "lapse_rate", "cue_weight.level"
-  double lower = 0.0, upper = 0.0;
+  double lower = 0.0, upper = 0.0;                  // stated (bootstrap); upper +infinity: unbounded (null)
+  double profile_lower = 0.0, profile_upper = 0.0;  // profile likelihood of the pooled trials
 };
 
 struct ModelLikelihoods {
   std::string participant;  // empty for the total
   double trials = 0.0;
-  double fitted = 0.0, defaults = 0.0, chance = 0.0;  // ln-likelihoods
+  // ln-likelihoods: fitted, the defaults with a fitted lapse rate, the defaults as they are, guessing
+  double fitted = 0.0, baseline = 0.0, defaults = 0.0, chance = 0.0;
+};
+
+// The actuator the trials were felt through, as the fit rendered the images.
+struct ModelActuator {
+  std::string given;                       // `fitted_on.actuator`: --actuator as given, or "ideal"
+  std::string name;                        // `actuator_name`: the profile's name (empty in older files)
+  std::optional<ResponseParams> response;  // `actuator_response` (absent in older files)
+  int line = 0;                            // the line of `actuator` in the file read (0: not there)
 };
 
 struct PerceptionModel {
   DiscriminationConstants constants;
-  // The fit's record (written; of it the reader fills `study` only).
+  // The fit's record (written; of it the reader fills `study` and `actuator` only).
   std::vector<std::string> fitted;
   double interval_confidence = 0.95;
+  std::size_t bootstrap_replicates = 0;
   std::vector<ModelInterval> intervals;
   std::string study;
-  std::string actuator;
+  ModelActuator actuator;
   std::vector<std::string> trial_files;
   std::size_t participants = 0;
   ModelLikelihoods in_sample;

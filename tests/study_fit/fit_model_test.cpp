@@ -1,7 +1,8 @@
 // The fit of `vimg study fit` on simulated participants (study/fit_model.hpp): the likelihood is the
-// model's equation, the fit recovers known constants within its 95 % profile intervals, the
-// interval ends lie where the profile has fallen 1.92, constants the trials cannot identify keep
-// their defaults with a warning, and too little data is refused.
+// model's equation, the fit recovers known constants within its intervals and beats the baseline
+// held out, the baseline is the defaults with the lapse rate that maximises the likelihood,
+// constants the trials cannot identify keep their defaults with a warning, weights the trials push
+// up are bounded from below only, and too little data is refused.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,66 +11,22 @@
 
 #include "study/fit_model.hpp"
 #include "study/fit_nelder_mead.hpp"
+#include "tests/study_fit/fit_data.hpp"
 #include "tests/study_fit/fit_simulation.hpp"
 
 namespace vimg::study {
 namespace {
 
-using fit_test::SplitMix;
+using fit_test::constant;
+using fit_test::cues_of;
+using fit_test::known_truth;
+using fit_test::simulate;
+using fit_test::two_sets;
 
-// |x_i - x_j| per cue of points in cue space (JND units).
-CueMatrix cues_of(const std::vector<CueDistances>& points) {
-  CueMatrix m(points.size(), std::vector<CueDistances>(points.size()));
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    for (std::size_t j = 0; j < points.size(); ++j) {
-      for (std::size_t c = 0; c < kCueCount; ++c) m[i][j][c] = std::abs(points[i][c] - points[j][c]);
-    }
-  }
-  return m;
-}
-
-// Two sets of four images in the level-pitch-envelope space (identified 60-90 % of the time by the
-// known truth: confused enough to inform the weights, distinct enough to inform the lapse rate).
-FitData two_sets() {
-  FitData d;
-  d.set_names = {"near", "far"};
-  d.set_cues = {cues_of({{0, 0, 0}, {1.5, 0, 0}, {0, 1.8, 0}, {0.75, 0.75, 1.5}}),
-                cues_of({{0, 0, 0}, {3, 0.75, 0}, {0.45, 3, 0.75}, {1.5, 1.5, 3}})};
-  return d;
-}
-
-// `participants` participants, each presented every image of every set `repetitions` times and
-// choosing by `truth`.
-void simulate(FitData& d, const DiscriminationConstants& truth, std::size_t participants, int repetitions, std::uint64_t seed) {
-  SplitMix random(seed);
-  for (std::size_t p = 0; p < participants; ++p) {
-    d.participants.push_back("P" + std::to_string(p + 1));
-    std::vector<ChoiceCounts> sets;
-    for (const CueMatrix& cues : d.set_cues) {
-      ChoiceCounts counts(cues.size(), std::vector<double>(cues.size(), 0.0));
-      for (std::size_t i = 0; i < cues.size(); ++i) {
-        const std::vector<double> row = fit_test::choice_row(cues, i, truth);
-        for (int r = 0; r < repetitions; ++r) counts[i][fit_test::draw(row, random)] += 1.0;
-      }
-      sets.push_back(counts);
-    }
-    d.counts.push_back(sets);
-  }
-}
-
-DiscriminationConstants known_truth() {
-  DiscriminationConstants t;
-  t.lapse_rate = 0.08;
-  t.cue_weight = {2.0, 0.5, 1.4};
-  return t;
-}
-
-const ConstantFit& constant(const ModelFit& fit, const std::string& name) {
-  for (const ConstantFit& c : fit.report) {
-    if (c.name == name) return c;
-  }
-  ADD_FAILURE() << "no constant " << name;
-  return fit.report.front();
+FitOptions quick() {
+  FitOptions o;
+  o.bootstrap.replicates = 200;
+  return o;
 }
 
 TEST(NelderMead, FindsRosenbrocksMinimum) {
@@ -112,62 +69,71 @@ TEST(FitLikelihood, IsTheSumOfEachTrialsLnChoiceProbability) {
   EXPECT_NEAR(chance_log_likelihood(pooled), -48.0 * std::log(4.0), 1e-9);
 }
 
-TEST(FitModel, RecoversKnownConstantsWithinTheirIntervalsAndBeatsTheDefaultsHeldOut) {
+TEST(FitModel, RecoversKnownConstantsWithinTheirIntervalsAndBeatsTheBaselineHeldOut) {
   FitData d = two_sets();
   const DiscriminationConstants truth = known_truth();
-  simulate(d, truth, 6, 30, 2026);
+  simulate(d, truth, 10, 20, 2026);
   ASSERT_FALSE(fit_refusal(d));
-  const ModelFit fit = fit_discrimination_model(d, {});
+  const ModelFit fit = fit_identification_model(d, quick());
   EXPECT_TRUE(fit.warnings.empty()) << fit.warnings.front();
+  // (Whether the intervals cover the truth as often as they say is fit_coverage_test.cpp's: one
+  // study misses one of eight intervals a third of the time.)
   for (std::size_t k = 0; k < kFitConstantCount; ++k) {
     const ConstantFit& c = constant(fit, fit_constant_name(k));
     ASSERT_TRUE(c.fitted) << c.name;
+    EXPECT_FALSE(c.at_least) << c.name;
     const double true_value = constant_value(truth, k);
-    EXPECT_LE(c.lower, true_value) << c.name << " fitted " << c.value;
-    EXPECT_GE(c.upper, true_value) << c.name << " fitted " << c.value;
-    EXPECT_LE(c.lower, c.value) << c.name;
-    EXPECT_GE(c.upper, c.value) << c.name;
-    // Informative: narrower than a factor of 3 either way.
-    EXPECT_LT(c.upper, 3.0 * true_value) << c.name;
+    EXPECT_NEAR(c.value, true_value, 0.35 * true_value) << c.name;
+    for (const auto& [lower, upper] : {std::pair{c.lower, c.upper}, std::pair{c.profile_lower, c.profile_upper}}) {
+      EXPECT_LE(lower, c.value) << c.name;
+      EXPECT_GE(upper, c.value) << c.name;
+      EXPECT_LT(upper, 3.0 * lower) << c.name;  // informative: narrower than a factor of 3
+    }
   }
   EXPECT_FALSE(constant(fit, "temperature_jnd").fitted);
   EXPECT_EQ(fit.constants.temperature_jnd, DiscriminationConstants{}.temperature_jnd);
-  // Held out: each participant is predicted better by the others' fit than by the defaults, and
-  // the total is the sum of the parts.
-  ASSERT_EQ(fit.held_out.size(), 6u);
-  double sum_fitted = 0.0, sum_trials = 0.0;
+  // Held out, the participants are predicted better by the others' fit than by the baseline, and
+  // the totals are the sums of the parts.
+  ASSERT_EQ(fit.held_out.size(), 10u);
+  double sum_fitted = 0.0, sum_baseline = 0.0, sum_trials = 0.0;
   for (const HeldOutParticipant& h : fit.held_out) {
-    EXPECT_GT(h.ll_fitted, h.ll_default) << h.participant;
     EXPECT_GT(h.ll_fitted, h.ll_chance) << h.participant;
     sum_fitted += h.ll_fitted;
+    sum_baseline += h.ll_baseline;
     sum_trials += h.trials;
   }
   EXPECT_NEAR(fit.held_out_ll_fitted, sum_fitted, 1e-9 * std::abs(sum_fitted));
+  EXPECT_NEAR(fit.held_out_ll_baseline, sum_baseline, 1e-9 * std::abs(sum_baseline));
+  EXPECT_GT(fit.held_out_ll_fitted, fit.held_out_ll_baseline + 10.0);
   EXPECT_EQ(sum_trials, fit.trials);
-  EXPECT_GE(fit.ll_fitted, fit.ll_default);
+  EXPECT_GE(fit.ll_fitted, fit.ll_baseline);
   EXPECT_GE(fit.ll_fitted, log_likelihood(d.set_cues, pooled_counts(d), truth) - 1e-6);  // the maximum
 }
 
-TEST(FitModel, TheProfileHasFallenAtLeast1Point92AtEachFiniteIntervalEnd) {
-  FitData d = two_sets();
-  simulate(d, known_truth(), 3, 20, 99);
-  const ModelFit fit = fit_discrimination_model(d, {});
+// Participants who choose by the defaults but guess 10 % of the time, among images 8 JNDs apart
+// (without guesses nearly always told apart): the defaults with a lapse rate of 0 lose to any fit
+// that allows a stray answer, the baseline does not. Seen to fail with the baseline's lapse rate
+// left at 0 (baseline_of in study/fit_model.cpp returning p.defaults): the fit then "beats the
+// baseline" by far more than 5 held out.
+TEST(FitModel, TheBaselineIsTheDefaultsWithTheLapseRateOfMostLikelihood) {
+  FitData d;
+  d.set_names = {"distinct"};
+  d.set_cues = {cues_of({{0, 0, 0}, {8, 0, 0}, {0, 8, 0}, {0, 0, 8}})};
+  DiscriminationConstants truth;
+  truth.lapse_rate = 0.1;
+  simulate(d, truth, 4, 20, 31);
+  const ModelFit fit = fit_identification_model(d, quick());
+  EXPECT_EQ(fit.baseline.cue_weight, DiscriminationConstants{}.cue_weight);
+  EXPECT_GT(fit.baseline.lapse_rate, 0.02);
+  // The most likely lapse rate: a step of 0.005 either way loses likelihood.
   const std::vector<ChoiceCounts> pooled = pooled_counts(d);
-  for (std::size_t k = 0; k < kFitConstantCount; ++k) {
-    const ConstantFit& c = constant(fit, fit_constant_name(k));
-    if (!c.fitted) continue;
-    // The profile at an end maximises over the others; the others held at the optimum give no more.
-    for (const double end : {c.lower, c.upper}) {
-      if (end == 0.0) continue;  // at the box's lower edge
-      DiscriminationConstants at = fit.constants;
-      set_constant_value(at, k, end);
-      EXPECT_LE(log_likelihood(d.set_cues, pooled, at), fit.ll_fitted - kProfileDrop95 + 1e-3) << c.name << " at " << end;
-    }
-    // Halfway to an end the others can still make up most of the difference: the profile is not below the drop.
-    DiscriminationConstants inside = fit.constants;
-    set_constant_value(inside, k, 0.5 * (c.value + c.upper));
-    EXPECT_GT(log_likelihood(d.set_cues, pooled, inside), fit.ll_fitted - 4.0 * kProfileDrop95) << c.name;
+  for (const double step : {-0.005, 0.005}) {
+    DiscriminationConstants moved = fit.baseline;
+    moved.lapse_rate += step;
+    EXPECT_LT(log_likelihood(d.set_cues, pooled, moved), fit.ll_baseline) << step;
   }
+  EXPECT_GT(fit.held_out_ll_baseline, fit.held_out_ll_default + 10.0);
+  EXPECT_LT(fit.held_out_ll_fitted - fit.held_out_ll_baseline, 5.0);  // the truth is of the baseline's family
 }
 
 TEST(FitModel, ACueThatNoPairDiffersInKeepsItsDefaultWithAWarning) {
@@ -175,7 +141,7 @@ TEST(FitModel, ACueThatNoPairDiffersInKeepsItsDefaultWithAWarning) {
   d.set_names = {"flat"};
   d.set_cues = {cues_of({{0, 0, 0}, {1, 0, 0}, {0, 1.5, 0}, {2, 1, 0}})};  // no envelope anywhere
   simulate(d, known_truth(), 4, 25, 11);
-  const ModelFit fit = fit_discrimination_model(d, {});
+  const ModelFit fit = fit_identification_model(d, quick());
   const ConstantFit& envelope = constant(fit, "cue_weight.envelope");
   EXPECT_FALSE(envelope.fitted);
   EXPECT_EQ(fit.constants.cue_weight[2], DiscriminationConstants{}.cue_weight[2]);
@@ -185,29 +151,56 @@ TEST(FitModel, ACueThatNoPairDiffersInKeepsItsDefaultWithAWarning) {
   EXPECT_TRUE(constant(fit, "cue_weight.pitch").fitted);
 }
 
-TEST(FitModel, AlwaysRightAnswersCannotBoundTheWeightsFromAboveSoTheyKeepTheirDefaults) {
-  FitData d;
-  d.set_names = {"distinct"};
-  d.set_cues = {cues_of({{0, 0, 0}, {6, 0, 0}, {0, 6, 0}, {0, 0, 6}})};
-  for (const char* p : {"P1", "P2", "P3"}) {
-    d.participants.push_back(p);
-    ChoiceCounts counts(4, std::vector<double>(4, 0.0));
-    for (std::size_t i = 0; i < 4; ++i) counts[i][i] = 20;
-    d.counts.push_back({counts});
-  }
-  const ModelFit fit = fit_discrimination_model(d, {});
+// Every answer right: the trials bound the weights from below only. Each is reported "at least"
+// its profile's lower end (an unbounded interval), and held at its default when the default is at
+// least that, at the bound otherwise. Seen to fail with the old rule (a weight whose profile is flat
+// up to the box's edge set back to its default, unfitted): fitted and at_least are false.
+TEST(FitModel, AlwaysRightAnswersBoundTheWeightsFromBelowOnly) {
+  const auto always_right = [](const CueMatrix& cues, double per_image) {
+    FitData d;
+    d.set_names = {"distinct"};
+    d.set_cues = {cues};
+    for (const char* p : {"P1", "P2", "P3"}) {
+      d.participants.push_back(p);
+      ChoiceCounts counts(cues.size(), std::vector<double>(cues.size(), 0.0));
+      for (std::size_t i = 0; i < cues.size(); ++i) counts[i][i] = per_image;
+      d.counts.push_back({counts});
+    }
+    return d;
+  };
+  // Far apart: the default weights (1) predict few errors, and the trials allow them.
+  const FitData far = always_right(cues_of({{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 0, 10}}), 20);
+  const ModelFit fit = fit_identification_model(far, quick());
   for (const char* name : {"cue_weight.level", "cue_weight.pitch", "cue_weight.envelope"}) {
-    EXPECT_FALSE(constant(fit, name).fitted) << name;
-    bool warned = false;
-    for (const std::string& w : fit.warnings) warned = warned || (w.rfind(name, 0) == 0 && w.find("cannot identify") != std::string::npos);
-    EXPECT_TRUE(warned) << name;
+    const ConstantFit& c = constant(fit, name);
+    EXPECT_TRUE(c.fitted && c.at_least) << name;
+    EXPECT_TRUE(std::isinf(c.upper) && std::isinf(c.profile_upper)) << name;
+    EXPECT_GT(c.profile_lower, 0.0) << name;
+    EXPECT_LE(c.profile_lower, 1.0) << name;
+    EXPECT_EQ(c.value, 1.0) << name;  // the default, which the trials allow
   }
-  EXPECT_EQ(fit.constants.cue_weight, DiscriminationConstants{}.cue_weight);
-  // The lapse rate is identified: no wrong answer in 240 says it is small.
   const ConstantFit& lapse = constant(fit, "lapse_rate");
   EXPECT_TRUE(lapse.fitted);
-  EXPECT_TRUE(lapse.lower_at_edge);
-  EXPECT_LT(lapse.upper, 0.05);
+  EXPECT_TRUE(lapse.lower_open);
+  EXPECT_LT(lapse.upper, 0.05);  // no wrong answer in 240 says it is small
+
+  // Close together along one cue (1.5 JND steps): the default predicts a third of the answers
+  // wrong, 180 right answers reject it, and the weight is held at the lower bound they set.
+  const FitData near = always_right(cues_of({{0, 0, 0}, {1.5, 0, 0}, {3, 0, 0}}), 60);
+  const ModelFit pushed = fit_identification_model(near, quick());
+  const ConstantFit& level = constant(pushed, "cue_weight.level");
+  EXPECT_TRUE(level.fitted && level.at_least);
+  EXPECT_GT(level.profile_lower, 1.5);
+  EXPECT_EQ(level.value, level.profile_lower);
+  EXPECT_EQ(pushed.constants.cue_weight[0], level.profile_lower);
+  bool said = false;
+  for (const std::string& w : pushed.warnings) said = said || w.find("being below what they allow") != std::string::npos;
+  EXPECT_TRUE(said);
+  // What it is held at is what the trials allow: the likelihood there is within 1.92 of the maximum.
+  DiscriminationConstants far_up = pushed.constants;
+  far_up.cue_weight[0] = 1000.0;
+  far_up.lapse_rate = 0.0;
+  EXPECT_GT(pushed.ll_fitted, log_likelihood(near.set_cues, pooled_counts(near), far_up) - kProfileDrop95 - 1e-2);
 }
 
 TEST(FitModel, RefusesNoTrialsOneParticipantAndTooFewTrials) {
