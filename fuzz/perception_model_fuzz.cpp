@@ -1,7 +1,7 @@
 // Fuzzes the reader of MODEL.json (storage/study/perception_model_file.hpp, what `vimg compare
 // --model` reads): any bytes give one located error or constants within their documented ranges,
 // never a crash; a model that reads is written again by the writer and reads back to the same
-// constants.
+// constants and the same actuator (as given, by name and by response).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -41,5 +41,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const vimg::DiscriminationConstants& b = back.model->constants;
   if (a.temperature_jnd != b.temperature_jnd || a.lapse_rate != b.lapse_rate || a.cue_weight != b.cue_weight) std::abort();
   if (back.model->study != r.model->study) std::abort();
+  const vimg::ModelActuator& x = r.model->actuator;
+  const vimg::ModelActuator& y = back.model->actuator;
+  if (x.given != y.given || x.name != y.name || x.response.has_value() != y.response.has_value()) std::abort();
+  if (x.response) {
+    const vimg::ResponseParams& u = *x.response;
+    const vimg::ResponseParams& v = *y.response;
+    if (u.model != v.model || u.resonance_hz != v.resonance_hz || u.q != v.q || u.low_hz != v.low_hz || u.high_hz != v.high_hz ||
+        u.spin_up_s != v.spin_up_s || u.spin_down_s != v.spin_down_s)
+      std::abort();
+    if (!(u.resonance_hz > 0.0 && u.q > 0.0 && u.low_hz > 0.0 && u.high_hz > 0.0 && u.spin_up_s > 0.0 && u.spin_down_s > 0.0))
+      std::abort();
+  }
   return 0;
 }
