@@ -88,12 +88,12 @@ void over_seeds(const char* what, std::size_t images, const study::TactileParame
 }
 
 TEST(SeparationSearch, ThreeImagesPeriodAndPatternWithinTenPercentOfExhaustive) {
-  over_seeds("3 images, period and pattern", 3, only({TactileParameter::period, TactileParameter::pattern}), 1, 25);
+  over_seeds("3 images, period and pattern", 3, only({TactileParameter::period, TactileParameter::pattern}), 1, 12);
 }
 
 TEST(SeparationSearch, TwoImagesAllThreeCuesWithinTenPercentOfExhaustive) {
   over_seeds("2 images, period, pattern and gain", 2,
-             only({TactileParameter::period, TactileParameter::pattern, TactileParameter::gain}), 11, 25);
+             only({TactileParameter::period, TactileParameter::pattern, TactileParameter::gain}), 11, 18);
 }
 
 TEST(SeparationSearch, ThreeImagesOnePeriodWithinTenPercentOfExhaustive) {
@@ -103,7 +103,7 @@ TEST(SeparationSearch, ThreeImagesOnePeriodWithinTenPercentOfExhaustive) {
 // Four images: periods within 3 steps (a narrow band) and patterns.
 TEST(SeparationSearch, FourImagesNarrowPeriodAndPatternWithinTenPercentOfExhaustive) {
   over_seeds("4 images, period within 3 steps and pattern", 4, only({TactileParameter::period, TactileParameter::pattern}),
-             51, 56, 3);
+             51, 54, 3);
 }
 
 TEST(SeparationSearch, ADistinctSetIsLeftAlone) {
