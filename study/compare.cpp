@@ -183,18 +183,16 @@ CompareResult run_compare(const CompareRequest& request) {
   if (request.stsim) r.stsim.assign(n, std::vector<double>(n, 1.0));
   r.cues.assign(n, std::vector<CueDistances>(n, CueDistances{}));
   run_tasks(n, threads, [&](std::size_t i, int) {
-    for (std::size_t j = 0; j < n; ++j) {
+    for (std::size_t j = 0; j < n && request.stsim; ++j) {
       if (j == i) continue;
-      if (request.stsim) {
-        const auto score = stsim_common_length(stsim_features[i], stsim_features[j]);
-        r.stsim[i][j] = score ? score->value : std::numeric_limits<double>::quiet_NaN();
-      }
-      if (j > i) r.cues[i][j] = cue_distances(r.features[i], r.features[j]);
+      const auto score = stsim_common_length(stsim_features[i], stsim_features[j]);
+      r.stsim[i][j] = score ? score->value : std::numeric_limits<double>::quiet_NaN();
     }
+    fill_cue_matrix_row(r.features, i, r.cues);
   });
+  mirror_cue_matrix(r.cues);
   r.distance_jnd.assign(n, std::vector<double>(n, 0.0));
   for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < i; ++j) r.cues[i][j] = r.cues[j][i];
     for (std::size_t j = 0; j < n; ++j) r.distance_jnd[i][j] = combined_distance_jnd(r.cues[i][j], request.discrimination);
   }
   r.predicted_confusion = identification_confusion(r.cues, request.discrimination);

@@ -250,12 +250,22 @@ CueDistances cue_distances(const DiscriminationFeatures& a, const Discrimination
   return d;
 }
 
+void fill_cue_matrix_row(std::span<const DiscriminationFeatures> signals, std::size_t i, CueMatrix& m) {
+  for (std::size_t j = i + 1; j < signals.size(); ++j) m[i][j] = cue_distances(signals[i], signals[j]);
+}
+
+void mirror_cue_matrix(CueMatrix& m) {
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    m[i][i] = CueDistances{};
+    for (std::size_t j = 0; j < i; ++j) m[i][j] = m[j][i];
+  }
+}
+
 CueMatrix cue_matrix(std::span<const DiscriminationFeatures> signals) {
   const std::size_t n = signals.size();
   CueMatrix m(n, std::vector<CueDistances>(n, CueDistances{}));
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = i + 1; j < n; ++j) m[i][j] = m[j][i] = cue_distances(signals[i], signals[j]);
-  }
+  for (std::size_t i = 0; i < n; ++i) fill_cue_matrix_row(signals, i, m);
+  mirror_cue_matrix(m);
   return m;
 }
 

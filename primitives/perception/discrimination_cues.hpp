@@ -103,6 +103,11 @@ CueDistances cue_distances(const DiscriminationFeatures& a, const Discrimination
 // [presented][chosen]: cue_distances of every pair; square, zeros on the diagonal, symmetric.
 using CueMatrix = std::vector<std::vector<CueDistances>>;
 CueMatrix cue_matrix(std::span<const DiscriminationFeatures> signals);
+// cue_matrix in parts, for callers that spread the rows over threads (study/compare.cpp): row i
+// of the upper triangle (m[i][j] for j > i; m square, n x n), then the lower triangle mirrored.
+// Different rows touch different elements, so rows may be filled at once.
+void fill_cue_matrix_row(std::span<const DiscriminationFeatures> signals, std::size_t i, CueMatrix& m);
+void mirror_cue_matrix(CueMatrix& m);
 
 // The detection threshold of the skin (the more sensitive channel) at frequency_hz, as peak
 // displacement in m.
