@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "web/server/event_stream.hpp"
 #include "web/server/http_message.hpp"
@@ -37,6 +38,8 @@ struct HttpRoutes {
   // From the network thread, at each connection accepted: the files the routes hold open for long
   // (participants' trial files), which come off the connections' share of the descriptors.
   std::function<int()> files_held;
+  // Further header fields a route reads (the study's X-Vimg-Key), passed in HttpRequest::passed_fields.
+  std::vector<std::string> passed_fields;
   EventBroadcaster* events = nullptr;
   std::size_t max_body_bytes = 0;
   HttpLimits limits;

@@ -21,8 +21,10 @@ struct HttpRequest {
   std::string target;  // as sent
   std::string path;    // the target before '?', percent-decoded
   std::string query;   // the raw text after '?'
-  std::string host, origin, key, content_type;  // Host, Origin, X-Vimg-Key, Content-Type
-  std::string last_event_id;                     // Last-Event-ID (an event stream reopened)
+  std::string host, origin, content_type;  // Host, Origin, Content-Type
+  std::string last_event_id;               // Last-Event-ID (an event stream reopened)
+  // The fields the routes asked for (HttpRoutes::passed_fields), in that order ("" when absent).
+  std::vector<std::string> passed_fields;
   std::string body;
 };
 
