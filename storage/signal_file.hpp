@@ -18,11 +18,12 @@
 #include <string_view>
 #include <vector>
 
+#include "primitives/perception/perception_rate.hpp"
 #include "storage/diagnostic.hpp"
 
 namespace vimg {
 
-inline constexpr double kCompareRateHz = 8000.0;
+inline constexpr double kCompareRateHz = kPerceptionRateHz;
 
 struct SignalReadResult {
   std::optional<std::vector<float>> samples;  // set only when there is no error

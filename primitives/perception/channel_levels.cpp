@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "primitives/perception/discrimination_cues.hpp"
+#include "primitives/perception/hann_window.hpp"
+#include "primitives/perception/perception_rate.hpp"
 #include "primitives/perception/radix2_fft.hpp"
 #include "primitives/perception/stsim.hpp"
 
@@ -18,7 +20,7 @@ constexpr std::size_t kM = 2 * kChannelFilterTaps;      // FFT size of the overl
 constexpr std::size_t kHalfTaps = kChannelFilterTaps / 2;  // the filter is zero for |n| >= this
 constexpr std::size_t kValid = kM - kChannelFilterTaps;   // outputs per block
 constexpr std::size_t kStepSamples = kEnvelopeStepSamples;  // 1 ms
-constexpr double kStepMs = 1000.0 * static_cast<double>(kStepSamples) / kStSimSampleRateHz;
+constexpr double kStepMs = 1000.0 * static_cast<double>(kStepSamples) / kPerceptionRateHz;
 static_assert(kValid % kStepSamples == 0 && kHalfTaps % kStepSamples == 0);
 
 const Radix2Plan& plan() {
@@ -59,7 +61,7 @@ ChannelFilters design(const LevelCalibration& calibration) {
   std::vector<double>& re = h.pacinian;
   std::vector<double>& im = h.non_pacinian;
   for (std::size_t k = 1; k < kM / 2; ++k) {
-    const double f = static_cast<double>(k) * kStSimSampleRateHz / static_cast<double>(kM);
+    const double f = static_cast<double>(k) * kPerceptionRateHz / static_cast<double>(kM);
     if (f < kLowestFeltHz) continue;
     const double omega = 2.0 * std::numbers::pi * f;
     const double displacement_m = calibration.full_scale_peak_acceleration_mps2 / (omega * omega);
@@ -69,7 +71,7 @@ ChannelFilters design(const LevelCalibration& calibration) {
   inverse_fft(re, im);
   for (std::size_t n = 0; n < kM; ++n) {
     const std::size_t d = std::min(n, kM - n);
-    const double w = d < kHalfTaps ? 0.5 + 0.5 * std::cos(std::numbers::pi * static_cast<double>(d) / kHalfTaps) : 0.0;
+    const double w = hann(static_cast<double>(d) / static_cast<double>(kHalfTaps));
     re[n] *= w / static_cast<double>(kM);
     im[n] *= w / static_cast<double>(kM);
   }

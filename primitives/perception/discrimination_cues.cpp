@@ -6,6 +6,8 @@
 #include <numbers>
 
 #include "primitives/perception/channel_levels.hpp"
+#include "primitives/perception/hann_window.hpp"
+#include "primitives/perception/perception_rate.hpp"
 #include "primitives/perception/power_spectrum.hpp"
 #include "primitives/perception/stsim.hpp"
 
@@ -17,8 +19,8 @@ constexpr std::size_t kN = kSpectrumFrameSamples;
 static_assert(kN == detail::kPowerSpectrumFrameSamples);
 constexpr std::size_t kBins = detail::kPowerSpectrumBins;
 constexpr std::size_t kHop = kN / 2;
-constexpr double kBinHz = kStSimSampleRateHz / static_cast<double>(kN);
-constexpr double kEnvelopeStepMs = 1000.0 * static_cast<double>(kEnvelopeStepSamples) / kStSimSampleRateHz;
+constexpr double kBinHz = kPerceptionRateHz / static_cast<double>(kN);
+constexpr double kEnvelopeStepMs = 1000.0 * static_cast<double>(kEnvelopeStepSamples) / kPerceptionRateHz;
 constexpr std::size_t kSlowEnvelopeStride = 8;  // steps between computed values of the slow envelope
 
 // The level that stands for "no energy at all", dB.
@@ -53,7 +55,7 @@ std::vector<double> hann_window(double length) {
   std::vector<double> w(n);
   double total = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    w[i] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(n));
+    w[i] = hann_sample(i, n, 0.5);
     total += w[i];
   }
   for (double& v : w) v /= total;
@@ -125,7 +127,7 @@ DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8kh
   // Envelopes: the Hann-weighted mean of x^2 around each step (fast), and that smoothed again over
   // kSlowEnvelopeWindowMs (slow), in dB relative to the slow one's largest value, floored where
   // they fall below the threshold (level_db below the strongest moment).
-  const std::vector<double> window = hann_window(kEnvelopeWindowMs * kStSimSampleRateHz / 1000.0);
+  const std::vector<double> window = hann_window(kEnvelopeWindowMs * kPerceptionRateHz / 1000.0);
   const std::size_t half = window.size() / 2;
   const std::size_t steps = (size + kEnvelopeStepSamples - 1) / kEnvelopeStepSamples;
   std::vector<double> fast(steps, 0.0);

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <vector>
 
+#include "primitives/perception/hann_window.hpp"
 #include "primitives/perception/radix2_fft.hpp"
 
 namespace vimg::detail {
@@ -20,8 +21,7 @@ struct Tables {
 
 Tables make_tables() {
   Tables t;
-  const double n = static_cast<double>(kN);
-  for (std::size_t i = 0; i < kN; ++i) t.window[i] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / n);
+  for (std::size_t i = 0; i < kN; ++i) t.window[i] = hann_sample(i, kN, 0.0);
   return t;
 }
 

@@ -27,10 +27,12 @@
 #include <vector>
 
 #include "primitives/perception/perception_matrix.hpp"
+#include "primitives/perception/perception_rate.hpp"
 
 namespace vimg {
 
 inline constexpr double kStSimSampleRateHz = 8000.0;
+static_assert(kStSimSampleRateHz == kPerceptionRateHz, "ST-SIM is reported beside the cues, on the same signals");
 inline constexpr std::size_t kStSimBlockSamples = 512;
 inline constexpr double kStSimEta = 2.0 / 3.0;           // weight of the temporal term
 inline constexpr double kStSimSupportScaleDb = 12.0;     // scale of the normal CDF
