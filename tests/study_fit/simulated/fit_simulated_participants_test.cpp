@@ -91,7 +91,7 @@ class SimulatedParticipants : public FitFolderTest {
                              "' study fit results/*.trials.csv --study study.xml --out " + out);
   }
 
-  int repetitions_ = 15;
+  int repetitions_ = 30;
   fs::path study_file_;
   MatchingStudy study_;
 };
@@ -101,7 +101,7 @@ TEST_F(SimulatedParticipants, TheFitRecoversTheKnownConstantsWithinItsIntervals)
   ASSERT_EQ(cues.size(), 4u);
   DiscriminationConstants truth;
   truth.lapse_rate = 0.08;
-  truth.cue_weight = {0.5, 2.0, 0.6};
+  truth.cue_weight = {1.0, 2.0, 0.6};  // every pair but a-b told apart: the lapse shows
   const std::vector<std::string> participants{"S1", "S2", "S3", "S4"};
   SplitMix random(20261127);
   for (const std::string& p : participants) {
@@ -140,22 +140,23 @@ TEST_F(SimulatedParticipants, TheFitRecoversTheKnownConstantsWithinItsIntervals)
   EXPECT_GE(fitted.size(), 2u) << r.out;
   // ... and the trials tell the lapse rate from its default 0 (the truth is 0.08).
   EXPECT_GT(j["intervals"]["bounds"]["lapse_rate"].array()[0].number(), 0.0) << r.out;
-  // Held out, the fitted constants predict each participant better than the defaults (far from the truth).
+  // Held out, the fitted constants predict the participants better than the defaults (far from the
+  // truth) and than the baseline (the defaults with a fitted lapse rate), over all of them: one
+  // participant of four may go the other way by chance.
   const auto& held_out = j["leave_one_participant_out"];
   ASSERT_EQ(held_out["participants"].array().size(), 4u);
-  for (const test::Json& p : held_out["participants"].array()) {
-    EXPECT_GT(p["fitted"].number(), p["default"].number()) << p["participant"].string() << "\n" << r.out;
-  }
+  EXPECT_GT(held_out["total"]["fitted"].number(), held_out["total"]["default"].number()) << r.out;
+  EXPECT_GT(held_out["total"]["fitted"].number(), held_out["total"]["baseline"].number()) << r.out;
   EXPECT_EQ(held_out["total"]["trials"].number(), 4.0 * 4 * repetitions_);
   EXPECT_NE(r.out.find("Leave one participant out"), std::string::npos) << r.out;
   EXPECT_EQ(j["fitted_on"]["participants"].number(), 4.0);
 }
 
 TEST_F(SimulatedParticipants, OnePairConfused40PercentOfTheTimeIsPredictedWithin0Point15) {
-  // b 2 dB weaker than a, c at a third of its frequency, d 17 dB weaker:
-  // the default constants predict a and b told apart far more often than these participants do, and
-  // every other pair far apart.
-  for (const Surface& s : {Surface{"b", 2.0, 0.56}, Surface{"c", 6.0, 0.7}, Surface{"d", 2.0, 0.1}})
+  // b 4 dB weaker than a (two level JNDs), c at a third of its frequency, d 17 dB weaker:
+  // the default constants predict a and b told apart far more often than these participants do
+  // (about 17 % confused), and every other pair far apart.
+  for (const Surface& s : {Surface{"b", 2.0, 0.44}, Surface{"c", 6.0, 0.7}, Surface{"d", 2.0, 0.1}})
     write_surface_image(dir_, s, kCanvasMm);
   // Every participant takes b for a (and a for b) on 2 of every 5 presentations, and is right otherwise.
   const std::vector<std::string> participants{"C1", "C2", "C3"};
