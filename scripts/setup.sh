@@ -9,7 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
   libteem-dev libcairo2-dev libsdl2-ttf-dev fonts-dejavu-core
   clang libclang-rt-14-dev
-  xvfb xdotool imagemagick xauth python3 libxtst-dev
+  xvfb xdotool imagemagick xauth python3 libxtst-dev strace
   locales
   libboost-math-dev python3-numpy python3-scipy
   help2man desktop-file-utils dpkg-dev file
