@@ -72,6 +72,32 @@ TEST_F(RouteQueues, AnswersStalledOnASlowDiskStallNothingElse) {
   EXPECT_EQ(api.answers_synced, kStalled);
 }
 
+// One client's requests (one X-Vimg-Key: a participant) run one at a time: six of its requests
+// held in their route (as behind its own answer's lock) take one reading worker, and everyone
+// else's state and files are answered meanwhile; once released, all six are answered in turn.
+// Seen to fail (the state request got no reply) with run_route_job posting every job at once.
+TEST_F(RouteQueues, OneClientsRequestsHoldOneWorker) {
+  StubApi api(root_ / "answers.txt");
+  start_server([&](WebServerOptions& options) { api.install(options); });
+  constexpr int kHeld = web::kRouteWorkerThreads + 2;
+  std::vector<std::unique_ptr<RawConnection>> held;
+  for (int i = 0; i < kHeld; ++i) {
+    held.push_back(std::make_unique<RawConnection>(port()));
+    ASSERT_TRUE(held.back()->send_all("GET /api/block HTTP/1.1\r\nHost: localhost\r\nX-Vimg-Key: k1\r\nConnection: close\r\n\r\n"));
+  }
+  ASSERT_TRUE(api.reads.wait_for_waiters(1));  // the client's first route is held
+  for (const char* target : {"/api/state", "/index.html"}) {
+    EXPECT_EQ(timed_exchange(port(), get_request(target)).status, 200) << target << " while one client holds its requests";
+  }
+  EXPECT_EQ(timed_exchange(port(), "GET /api/state HTTP/1.1\r\nHost: localhost\r\nX-Vimg-Key: k2\r\nConnection: close\r\n\r\n").status, 200)
+      << "another client";
+  api.reads.open();
+  for (auto& connection : held) {
+    ASSERT_TRUE(connection->read_to_end());
+    EXPECT_EQ(parse_response(connection->received()).status, 200);
+  }
+}
+
 // A client that closes while its request waits for a worker is dropped, and its route never runs.
 // Seen to fail (the count was 2) with the departed_ check removed from Session::dispatch.
 TEST_F(RouteQueues, TheRouteOfAClientThatHasGoneIsNotRun) {

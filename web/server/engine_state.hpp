@@ -10,7 +10,12 @@
 #include <boost/asio/thread_pool.hpp>
 #include <boost/beast/core/tcp_stream.hpp>
 #include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <functional>
 #include <memory>
+#include <mutex>
+#include <string>
 #include <optional>
 #include <unordered_map>
 
@@ -38,6 +43,13 @@ struct AtomicCounts {
   std::atomic<long> refused_busy{0}, closed_unanswered{0}, routes_queued{0}, routes_dropped{0}, routes_failed{0};
 };
 
+// The routes of one client (one value of HttpRoutes::client_field) on one pool: one runs at a
+// time, the others wait here, on the network thread, costing no worker.
+struct ClientQueue {
+  bool running = false;
+  std::deque<std::function<void()>> waiting;
+};
+
 struct EngineState {
   HttpRoutes routes;
   net::io_context io{1};
@@ -48,6 +60,46 @@ struct EngineState {
   bool stopping = false;
   std::optional<net::steady_timer> stop_deadline;  // while stopping: closes what is left
   AtomicCounts counts;
+  std::unordered_map<std::string, ClientQueue> client_queues[2];  // [0]: reading pool, [1]: writing pool
+  // Routes handed to a pool (or waiting for their client's turn) whose reply has not come back;
+  // stop() waits for none to be left before it joins the pools.
+  std::mutex pending_mutex;
+  std::condition_variable pending_changed;
+  int routes_pending = 0;
+
+  net::thread_pool& pool(int index) { return index == 0 ? *read_pool : *write_pool; }
+
+  // Runs `job` on the pool now, or after the client's route under way there.
+  void run_route_job(int pool_index, const std::string& client, std::function<void()> job) {
+    {
+      const std::lock_guard lock(pending_mutex);
+      ++routes_pending;
+    }
+    if (client.empty()) return net::post(pool(pool_index), std::move(job));
+    ClientQueue& queue = client_queues[pool_index][client];
+    if (!queue.running) {
+      queue.running = true;
+      return net::post(pool(pool_index), std::move(job));
+    }
+    queue.waiting.push_back(std::move(job));
+  }
+
+  // A route's reply is back on the network thread: the client's next route goes to the pool.
+  void route_job_done(int pool_index, const std::string& client) {
+    if (!client.empty()) {
+      const auto found = client_queues[pool_index].find(client);
+      if (found != client_queues[pool_index].end()) {
+        if (found->second.waiting.empty()) {
+          client_queues[pool_index].erase(found);
+        } else {
+          net::post(pool(pool_index), std::move(found->second.waiting.front()));
+          found->second.waiting.pop_front();
+        }
+      }
+    }
+    const std::lock_guard lock(pending_mutex);
+    if (--routes_pending == 0) pending_changed.notify_all();
+  }
 
   const HttpLimits& limits() const { return routes.limits; }
 

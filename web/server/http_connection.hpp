@@ -141,6 +141,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     request_.host = std::string(head[http::field::host]);
     request_.origin = std::string(head[http::field::origin]);
     for (const std::string& name : engine_.routes.passed_fields) request_.passed_fields.emplace_back(head[name]);
+    client_ = engine_.routes.client_field.empty() ? std::string() : std::string(head[engine_.routes.client_field]);
     request_.content_type = std::string(head[http::field::content_type]);
     request_.last_event_id = std::string(head["Last-Event-ID"]);
     if (auto refusal = engine_.routes.refuse(request_)) return send(std::move(*refusal), true);
@@ -177,9 +178,9 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     tcp_layer().expires_never();
     in_flight_ = true;
     watch_for_departure();
-    net::thread_pool& pool = request_.method == "POST" ? *engine_.write_pool : *engine_.read_pool;
+    const int pool = request_.method == "POST" ? 1 : 0;
     ++engine_.counts.routes_queued;
-    net::post(pool, [self = this->shared_from_this()]() mutable {
+    engine_.run_route_job(pool, client_, [self = this->shared_from_this(), pool]() mutable {
       HttpReply reply;
       std::string failure;
       if (self->departed_.load()) {
@@ -188,7 +189,8 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
         reply = run_route(self->engine_.routes, self->request_, failure);
       }
       EngineState& engine = self->engine_;
-      net::post(engine.io, [self = std::move(self), reply = std::move(reply), failure = std::move(failure)]() mutable {
+      net::post(engine.io, [self = std::move(self), reply = std::move(reply), failure = std::move(failure), pool]() mutable {
+        self->engine_.route_job_done(pool, self->client_);
         self->in_flight_ = false;
         beast::error_code ignored;
         self->tcp_layer().socket().cancel(ignored);  // the watch
@@ -314,6 +316,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
   beast::flat_buffer buffer_{kMaxBufferedBytes};
   std::optional<http::request_parser<http::string_body>> parser_;
   HttpRequest request_;
+  std::string client_;  // the request's value of HttpRoutes::client_field: its routes run one at a time
   HttpReply reply_;  // being written
   std::string head_, continue_, sending_;
   std::array<char, 512> scratch_{};

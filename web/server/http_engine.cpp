@@ -190,9 +190,14 @@ void HttpEngine::stop() {
     s.begin_stop();
     begun.set_value();
   });
-  begun.get_future().wait();  // no route is handed a request from now on
-  // The routes under way (an answer being synced) end; their replies are posted to the network
-  // thread, which sends them and then closes (or the grace deadline closes what is left).
+  begun.get_future().wait();  // no new request is read from now on
+  // The routes accepted (an answer being synced, or waiting for its client's turn) end; their
+  // replies are posted to the network thread, which sends them and then closes (or the grace
+  // deadline closes what is left).
+  {
+    std::unique_lock lock(s.state.pending_mutex);
+    s.state.pending_changed.wait(lock, [&s] { return s.state.routes_pending == 0; });
+  }
   s.state.read_pool->join();
   s.state.write_pool->join();
   s.work.reset();
@@ -203,6 +208,8 @@ void HttpEngine::stop() {
   s.acceptor.reset();
   s.retry_accept.reset();
   s.state.open.clear();
+  s.state.client_queues[0].clear();
+  s.state.client_queues[1].clear();
   s.state.connections = s.state.refusing = 0;
   s.state.counts.open_connections = 0;
 }

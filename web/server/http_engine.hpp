@@ -40,6 +40,11 @@ struct HttpRoutes {
   std::function<int()> files_held;
   // Further header fields a route reads (the study's X-Vimg-Key), passed in HttpRequest::passed_fields.
   std::vector<std::string> passed_fields;
+  // A header field that names a client (the study's key: one participant): the routes of one
+  // value run one at a time on each pool, the others waiting on the network thread, so that one
+  // client's concurrent requests hold at most one worker of each pool (never every reading worker
+  // behind its own answer's lock). Empty: no such field.
+  std::string client_field;
   EventBroadcaster* events = nullptr;
   std::size_t max_body_bytes = 0;
   HttpLimits limits;

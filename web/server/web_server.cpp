@@ -87,7 +87,10 @@ struct WebServer::Impl {
           ": failed: " + loggable(what));
     };
     r.files_held = options.api_files_held;
-    if (options.api) r.passed_fields = {kKeyField};
+    if (options.api) {
+      r.passed_fields = {kKeyField};
+      r.client_field = kKeyField;
+    }
     r.events = &events;
     r.max_body_bytes = kMaxRequestBodyBytes;
     r.limits = options.limits;
