@@ -14,6 +14,7 @@
 //              image, the answer the test chose): per set the comparison matrix, the participant's
 //              trials, correct and accuracy, and the accuracy's 95 % Wilson interval computed here
 //   loading    before the study is loaded, window.vimg.study.state() is {phase: 'loading'}
+//   phone      at 412 px wide the grey stage shows only where one rubs; the device check says "1 point"
 //   refused    an answer refused for good (403) is sent once and the page says what to do
 // Waits are on states (a printed URL, a row in the file, a promise), each bounded only against a hang.
 // usage: node run_study_tests.mjs VIMG VIMG_PLAYER|none SOURCE_DIR ARTIFACT_DIR
@@ -260,6 +261,49 @@ await check('loading', async () => {
   assert(after.phase === 'instructions' && after.trial === 1, `after loading: ${JSON.stringify(after)}`);
   await p.close();
   return `${JSON.stringify(before.state)}, then ${after.phase}`;
+});
+
+// The screens on a 412 px wide phone with one touch point: the grey stage is shown only where the
+// participant rubs (training, a trial before Answer), not under the instructions, the device check
+// or the choices; the device check says "1 point". Screenshots: phone-*.png. Nothing is answered.
+await check('phone', async () => {
+  const p = await browser.newPage();
+  p.on('pageerror', (e) => problems.push(`uncaught (phone): ${e.message}`));
+  await p.setViewport({ width: 412, height: 915, deviceScaleFactor: 1, isMobile: true, hasTouch: true });
+  const client = await p.target().createCDPSession();
+  await client.send('Emulation.setTouchEmulationEnabled', { enabled: true, maxTouchPoints: 1 });
+  const linkOf = execFileSync(vimg, ['study', 'link', art('results'), '--participant', 'phone-1'], { encoding: 'utf8' }).trim();
+  await p.goto(linkOf, { waitUntil: 'load' });
+  await p.waitForFunction(() => window.vimg !== undefined && window.vimg.ready !== undefined, { timeout: 60000 });
+  await p.evaluate(() => window.vimg.ready);
+  const stageShown = () => p.evaluate(() => {
+    const stage = document.getElementById('stage');
+    return getComputedStyle(stage).display !== 'none' && stage.getBoundingClientRect().height > 0;
+  });
+  const seen = [];
+  const expect = async (phase, shown) => {
+    const state = await p.evaluate(() => window.vimg.study.state());
+    assert(state.phase === phase, `the page is at ${state.phase}, expected ${phase}`);
+    await p.screenshot({ path: art(`phone-${seen.length + 1}-${phase}.png`), fullPage: true });
+    const got = await stageShown();
+    assert(got === shown, `${phase}: the stage is ${got ? 'shown' : 'hidden'}`);
+    seen.push(`${phase} ${got ? 'shown' : 'hidden'}`);
+  };
+  await expect('instructions', false);
+  await p.evaluate(() => window.vimg.study.proceed());
+  await expect('device-check', false);
+  const touch = await p.evaluate(() => document.getElementById('touch-state').textContent);
+  assert(touch === 'present (1 point)', `the device check says: ${touch}`);
+  await p.evaluate(() => window.vimg.study.proceed());
+  await expect('training', true);
+  await p.evaluate(() => window.vimg.study.proceed());
+  await expect('trial', true);  // rubbing
+  await rub(p, gesture);
+  await p.click('#answer');
+  assert(await p.evaluate(() => document.querySelectorAll('#choices figure').length) > 0, 'no choices after Answer');
+  await expect('trial', false);  // choosing
+  await p.close();
+  return `${seen.join(', ')}; touch: ${touch}`;
 });
 
 // An answer the server refuses for good (403: the server was restarted on another results folder,

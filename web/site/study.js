@@ -186,8 +186,9 @@
       $('instructions-text').textContent = study.instructions;
       $('consent-text').textContent = study.consent;
     } else if (p === 'device-check') {
-      $('touch-state').textContent = navigator.maxTouchPoints > 0 ? 'present (' + navigator.maxTouchPoints + ' points)'
-                                                                  : 'none found: use the device\'s touch screen';
+      const n = navigator.maxTouchPoints;
+      $('touch-state').textContent = n > 0 ? 'present (' + n + (n === 1 ? ' point)' : ' points)')
+                                           : 'none found: use the device\'s touch screen';
     } else if (p === 'training') {
       $('training-set').textContent = study.sets[set].name;
       const selected = m._vimg_study_training_picture();
