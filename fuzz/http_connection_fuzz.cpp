@@ -57,8 +57,8 @@ struct Fixture {
     options.site_dir = site;
     options.log_line = [](const std::string&) {};
     options.api = [](const ApiRequest& request) {
-      if (request.path == "/api/answer") return ApiReply{200, "application/json", "{\"bytes\": " + std::to_string(request.body.size()) + "}"};
-      return ApiReply{404, "text/plain", "not found"};
+      if (request.path == "/api/answer") return body_reply(200, "application/json", "{\"bytes\": " + std::to_string(request.body.size()) + "}");
+      return body_reply(404, "text/plain", "not found");
     };
     options.api_post_paths = {"/api/answer"};
     options.limits.header_deadline = std::chrono::milliseconds(1000);

@@ -92,7 +92,7 @@ class StudyServiceTest : public ::testing::Test {
     r.path = "/api/answer";
     r.host = "localhost";
     r.origin = origin;
-    r.key = key;
+    r.passed_fields = {{web::kApiKeyField, key}};
     r.content_type = "application/x-www-form-urlencoded";
     r.body = body;
     return r;
@@ -104,7 +104,7 @@ class StudyServiceTest : public ::testing::Test {
     r.path = path;
     r.query = query;
     r.host = "localhost";
-    r.key = key;
+    r.passed_fields = {{web::kApiKeyField, key}};
     return r;
   }
   // The files of the results folder that name the participant.

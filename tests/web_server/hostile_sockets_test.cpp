@@ -125,7 +125,7 @@ TEST_F(HostileSockets, AParticipantIsAnsweredBesideSilentAndSlowSockets) {
   options.api = [&](const web::ApiRequest& request) {
     const std::lock_guard lock(answers_mutex);
     answers.push_back(request.body);
-    return web::ApiReply{200, "application/json", "{\"completed\": " + std::to_string(answers.size()) + "}"};
+    return web::body_reply(200, "application/json", "{\"completed\": " + std::to_string(answers.size()) + "}");
   };
   options.api_post_paths = {"/api/answer"};
   server_ = std::make_unique<WebServer>(options);

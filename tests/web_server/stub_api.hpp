@@ -65,30 +65,30 @@ class StubApi {
   }
 
   web::ApiReply handle(const web::ApiRequest& request) {
-    if (request.path == "/api/state") return {200, "application/json", "{\"state\": 1}"};
-    if (request.path == "/api/count") return {200, "text/plain", std::to_string(++counted)};
+    if (request.path == "/api/state") return web::body_reply(200, "application/json", "{\"state\": 1}");
+    if (request.path == "/api/count") return web::body_reply(200, "text/plain", std::to_string(++counted));
     if (request.path == "/api/block") {
       reads.wait();
-      return {200, "text/plain", "unblocked"};
+      return web::body_reply(200, "text/plain", "unblocked");
     }
     if (request.path == "/api/throw") throw std::runtime_error("injected fault");
     if (request.path == "/api/answer") return answer(request.body);
-    return {404, "text/plain", "not found"};
+    return web::body_reply(404, "text/plain", "not found");
   }
 
  private:
   // The slow file layer: the row is written, then its sync waits for the disk.
   web::ApiReply answer(const std::string& body) {
     const int fd = ::open(answers_file_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-    if (fd < 0) return {500, "text/plain", "cannot open"};
+    if (fd < 0) return web::body_reply(500, "text/plain", "cannot open");
     const std::string row = body + "\n";
     const bool written = ::write(fd, row.data(), row.size()) == static_cast<ssize_t>(row.size());
     disk.wait();
     const bool synced = written && ::fsync(fd) == 0;
     ::close(fd);
-    if (!synced) return {500, "text/plain", "cannot write"};
+    if (!synced) return web::body_reply(500, "text/plain", "cannot write");
     ++answers_synced;
-    return {200, "application/json", "{\"recorded\": 1}"};
+    return web::body_reply(200, "application/json", "{\"recorded\": 1}");
   }
 
   std::filesystem::path answers_file_;

@@ -140,7 +140,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     }
     request_.host = std::string(head[http::field::host]);
     request_.origin = std::string(head[http::field::origin]);
-    for (const std::string& name : engine_.routes.passed_fields) request_.passed_fields.emplace_back(head[name]);
+    for (const std::string& name : engine_.routes.passed_fields) request_.passed_fields.emplace_back(name, head[name]);
     client_ = engine_.routes.client_field.empty() ? std::string() : std::string(head[engine_.routes.client_field]);
     request_.content_type = std::string(head[http::field::content_type]);
     request_.last_event_id = std::string(head["Last-Event-ID"]);

@@ -34,12 +34,23 @@ int hex_digit(char c) {
   return -1;
 }
 
-HttpReply text_reply(int status, const std::string& text) {
+std::string_view HttpRequest::field(std::string_view name) const {
+  for (const auto& [passed, value] : passed_fields) {
+    if (passed == name) return value;
+  }
+  return {};
+}
+
+HttpReply body_reply(int status, std::string content_type, std::string body) {
   HttpReply reply;
   reply.status = status;
-  reply.content_type = "text/plain; charset=utf-8";
-  reply.body = text + "\n";
+  reply.content_type = std::move(content_type);
+  reply.body = std::move(body);
   return reply;
+}
+
+HttpReply text_reply(int status, const std::string& text) {
+  return body_reply(status, "text/plain; charset=utf-8", text + "\n");
 }
 
 std::string format_reply_head(const HttpReply& reply, std::size_t body_bytes) {

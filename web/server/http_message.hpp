@@ -23,9 +23,12 @@ struct HttpRequest {
   std::string query;   // the raw text after '?'
   std::string host, origin, content_type;  // Host, Origin, Content-Type
   std::string last_event_id;               // Last-Event-ID (an event stream reopened)
-  // The fields the routes asked for (HttpRoutes::passed_fields), in that order ("" when absent).
-  std::vector<std::string> passed_fields;
+  // The fields the routes asked for (HttpRoutes::passed_fields): name and value ("" when absent).
+  std::vector<std::pair<std::string, std::string>> passed_fields;
   std::string body;
+
+  // The value of the passed field `name` ("" when absent or not asked for).
+  std::string_view field(std::string_view name) const;
 };
 
 struct HttpReply {
@@ -45,6 +48,8 @@ struct HttpReply {
   std::size_t content_length() const { return head_only_bytes ? *head_only_bytes : body_bytes().size(); }
 };
 
+// A reply of `status` with `body` of `content_type`.
+HttpReply body_reply(int status, std::string content_type, std::string body);
 // "text\n" as text/plain.
 HttpReply text_reply(int status, const std::string& text);
 

@@ -24,8 +24,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t kMaxLoggedPathChars = 200;
-// The API's key travels in this header (web/study_server/study_service.hpp); passed to the API only.
-constexpr const char* kKeyField = "X-Vimg-Key";
 
 // The path as the log shows it: control characters and non-ASCII bytes as \xHH, cut at
 // kMaxLoggedPathChars, so that a request cannot forge or flood log lines.
@@ -88,8 +86,8 @@ struct WebServer::Impl {
     };
     r.files_held = options.api_files_held;
     if (options.api) {
-      r.passed_fields = {kKeyField};
-      r.client_field = kKeyField;
+      r.passed_fields = {kApiKeyField};
+      r.client_field = kApiKeyField;
     }
     r.events = &events;
     r.max_body_bytes = kMaxRequestBodyBytes;
@@ -122,16 +120,7 @@ struct WebServer::Impl {
     return serve_file(request);
   }
 
-  HttpReply serve_api(const HttpRequest& request) const {
-    const ApiReply api = options.api(ApiRequest{request.method, request.path, request.query, request.host,
-                                                request.origin, request.passed_fields.empty() ? std::string() : request.passed_fields[0],
-                                                request.content_type, request.body});
-    HttpReply reply;
-    reply.status = api.status;
-    reply.content_type = api.content_type;
-    reply.body = api.body;
-    return reply;
-  }
+  HttpReply serve_api(const HttpRequest& request) const { return options.api(request); }
 
   void log(const std::string& line) const {
     if (options.log_line) {

@@ -29,28 +29,19 @@
 #include <vector>
 
 #include "web/server/http_limits.hpp"
+#include "web/server/http_message.hpp"
 
 namespace vimg::web {
 
 inline constexpr std::size_t kMaxRequestBodyBytes = 4096;
 inline constexpr std::size_t kMaxServedFileBytes = std::size_t{64} << 20;
 
-// A request to the API, without the library's types: what web/study_server/ needs of it.
-struct ApiRequest {
-  std::string method;  // GET, HEAD or POST
-  std::string path;    // decoded, as routed
-  std::string query;   // the raw text after '?', empty without one
-  std::string host;    // the Host header
-  std::string origin;  // the Origin header, empty without one
-  std::string key;     // the X-Vimg-Key header, empty without one
-  std::string content_type;
-  std::string body;
-};
-struct ApiReply {
-  int status = 200;
-  std::string content_type = "text/plain; charset=utf-8";
-  std::string body;
-};
+// The API's request and reply are the server's own (web/server/http_message.hpp, without the
+// library's types), the request passed as it was read: its method (GET, HEAD or POST), decoded path,
+// raw query, Host, Origin, Content-Type, body, and the key field kApiKeyField (request.field()).
+inline constexpr const char* kApiKeyField = "X-Vimg-Key";
+using ApiRequest = HttpRequest;
+using ApiReply = HttpReply;
 using ApiHandler = std::function<ApiReply(const ApiRequest&)>;
 
 struct WebServerOptions {

@@ -19,9 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-ApiReply text_reply(int status, const std::string& text) { return {status, "text/plain; charset=utf-8", text + "\n"}; }
-
-ApiReply json_reply(int status, std::string json) { return {status, "application/json", std::move(json)}; }
+ApiReply json_reply(int status, std::string json) { return body_reply(status, "application/json", std::move(json)); }
 
 // An answer's outcome the page can act on: the reason it was refused (none when it was recorded)
 // and how many trials are recorded.
@@ -98,7 +96,7 @@ ApiReply StudyService::handle(const ApiRequest& request) {
   if (!get) return text_reply(405, "method not allowed");
   if (request.path == "/api/state") return state(request);
   if (request.path == "/api/progress" || request.path == "/api/report" || request.path == "/api/link") {
-    if (!keys_.is_researcher_key(request.key)) return text_reply(403, "forbidden: the researcher's key is wrong or missing");
+    if (!keys_.is_researcher_key(request.field(kApiKeyField))) return text_reply(403, "forbidden: the researcher's key is wrong or missing");
     if (request.path == "/api/progress") return progress();
     if (request.path == "/api/report") return report();
     return link(request);
@@ -112,7 +110,7 @@ ApiReply StudyService::state(const ApiRequest& request) {
   if (!query.ok() || !participant || !valid_participant_id(*participant)) {
     return text_reply(400, "bad request: ?participant=ID (1 to 64 of A-Z a-z 0-9 _ -)");
   }
-  if (!keys_.is_participant_key(*participant, request.key)) return text_reply(403, "forbidden: wrong or missing key");
+  if (!keys_.is_participant_key(*participant, request.field(kApiKeyField))) return text_reply(403, "forbidden: wrong or missing key");
   std::size_t completed = 0;
   bool finished = false;
   std::string error;
@@ -180,7 +178,7 @@ ApiReply StudyService::answer(const ApiRequest& request) {
   const AnswerParse parsed = parse_answer(parse_form_text(request.body), total_);
   if (!parsed.answer) return text_reply(400, "bad request: " + parsed.error);
   const ParsedAnswer& a = *parsed.answer;
-  if (!keys_.is_participant_key(a.participant, request.key)) return text_reply(403, "forbidden: wrong or missing key");
+  if (!keys_.is_participant_key(a.participant, request.field(kApiKeyField))) return text_reply(403, "forbidden: wrong or missing key");
   const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
   if (!logs_.take_answer(a.participant, now_s)) {  // before the participant's lock: nothing waits for a refusal
     return text_reply(429, "too many requests: at most " + std::to_string(static_cast<int>(kAnswersPerSecond)) +
@@ -261,7 +259,7 @@ ApiReply StudyService::report() const {
   }
   if (!inputs.has_trials()) return text_reply(404, "no trials yet");
   std::vector<Diagnostic> warnings;
-  return {200, "text/html; charset=utf-8", study::report_html(study::make_study_report(inputs, warnings))};
+  return body_reply(200, "text/html; charset=utf-8", study::report_html(study::make_study_report(inputs, warnings)));
 }
 
 ApiReply StudyService::link(const ApiRequest& request) const {
