@@ -156,7 +156,7 @@ int run(const std::string& vimg, const fs::path& source, const fs::path& work, c
     std::printf("FAIL: vimg serve printed no URL:\n%s\n", printed.c_str());
     return 1;
   }
-  HostileSockets hostile(port, s.silent, s.slow, milliseconds(s.slow_period_ms));
+  HostileClients hostile(port, s.silent, s.slow, milliseconds(s.slow_period_ms));
   for (const auto give_up = Clock::now() + std::chrono::seconds(10); hostile.open_now() < s.silent + s.slow && Clock::now() < give_up;) {
     std::this_thread::sleep_for(milliseconds(10));
   }

@@ -1,10 +1,9 @@
 #pragma once
 // The clients of the study server's load run (bench/study_load.cpp): one HTTP request over a socket
-// of its own with a bound, the hostile sockets (silent, or a header byte at a time) held open on a
-// thread of their own, and `vimg serve` as a child process whose printed URL gives the port.
-#include <arpa/inet.h>
+// of its own with a bound, a participant's keep-alive connection and `vimg serve` as a child process
+// whose printed URL gives the port. The raw sockets and the hostile clients (silent, or a header
+// byte at a time, on a thread of their own) are the server tests' (tests/net/).
 #include <fcntl.h>
-#include <netinet/in.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/socket.h>
@@ -18,6 +17,9 @@
 #include <thread>
 #include <vector>
 
+#include "tests/net/hostile_clients.hpp"
+#include "tests/net/raw_http.hpp"
+
 namespace vimg::bench {
 
 using Clock = std::chrono::steady_clock;
@@ -26,49 +28,16 @@ inline double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-inline int connect_to(int port, bool non_blocking = false) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  if (fd < 0) return -1;
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(port));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0) {
-    ::close(fd);
-    return -1;
-  }
-  if (non_blocking) ::fcntl(fd, F_SETFL, O_NONBLOCK);
-  return fd;
-}
-
-struct Reply {
-  int status = 0;  // 0: no reply within the bound (refused, reset, or too slow)
-  std::string body;
-};
+using test::connect_loopback;
+using Reply = test::HttpResponse;  // status 0: no reply within the bound (refused, reset, or too slow)
+using test::HostileClients;
 
 // One request with Connection: close; the reply, read until the server closes, within `bound`.
 inline Reply request(int port, const std::string& text, std::chrono::milliseconds bound) {
-  const auto give_up = Clock::now() + bound;
-  const int fd = connect_to(port);
-  if (fd < 0) return {};
-  std::string received;
-  bool sent = ::send(fd, text.data(), text.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(text.size());
-  while (sent) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - Clock::now()).count();
-    pollfd p{fd, POLLIN, 0};
-    if (left <= 0 || ::poll(&p, 1, static_cast<int>(left)) <= 0) break;
-    char buffer[4096];
-    const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
-    if (n <= 0) break;
-    received.append(buffer, static_cast<std::size_t>(n));
-  }
-  ::close(fd);
-  Reply reply;
-  const std::size_t head_end = received.find("\r\n\r\n");
-  if (received.rfind("HTTP/1.", 0) != 0 || head_end == std::string::npos) return reply;
-  reply.status = std::atoi(received.c_str() + 9);
-  reply.body = received.substr(head_end + 4);
-  return reply;
+  test::RawConnection connection(port);
+  if (!connection.connected() || !connection.send_all(text)) return {};
+  connection.read_to_end(bound);
+  return test::parse_response(connection.received());
 }
 
 // One connection kept open for a participant's requests, as a browser keeps one: a request that
@@ -84,7 +53,7 @@ class KeepAliveClient {
     const auto give_up = Clock::now() + bound;
     for (int attempt = 0; attempt < 2; ++attempt) {
       const bool reused = fd_ >= 0;
-      if (fd_ < 0) fd_ = connect_to(port_);
+      if (fd_ < 0) fd_ = connect_loopback(port_);
       if (fd_ < 0) return {};
       Reply reply;
       if (::send(fd_, text.data(), text.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(text.size())) reply = read_reply(give_up);
@@ -128,64 +97,6 @@ class KeepAliveClient {
 
   int port_;
   int fd_ = -1;
-};
-
-// Silent sockets connect and say nothing; slow ones send a request line, then one header byte
-// every `slow_period`. A socket the server closed is opened again at the next tick (100 ms).
-class HostileSockets {
- public:
-  HostileSockets(int port, int silent, int slow, std::chrono::milliseconds slow_period)
-      : port_(port), silent_(silent), slow_(slow), slow_period_(slow_period), thread_([this] { run(); }) {}
-  ~HostileSockets() {
-    stop_ = true;
-    thread_.join();
-  }
-  int reopened() const { return reopened_; }
-  int open_now() const { return open_now_; }
-
- private:
-  void open(int& fd, bool slow) {
-    fd = connect_to(port_, true);
-    if (fd >= 0 && slow) ::send(fd, "GET / HTTP/1.1\r\nX-Slow: ", 24, MSG_NOSIGNAL);
-  }
-  void run() {
-    std::vector<int> fds(static_cast<std::size_t>(silent_ + slow_), -1);
-    for (std::size_t i = 0; i < fds.size(); ++i) open(fds[i], static_cast<int>(i) >= silent_);
-    auto next_byte = Clock::now() + slow_period_;
-    while (!stop_) {
-      std::vector<pollfd> polled;
-      for (const int fd : fds) polled.push_back({fd, POLLIN, 0});
-      ::poll(polled.data(), polled.size(), 100);
-      int open_count = 0;
-      for (std::size_t i = 0; i < fds.size(); ++i) {
-        char scratch[1024];
-        if (fds[i] >= 0 && polled[i].revents != 0 && ::recv(fds[i], scratch, sizeof scratch, 0) <= 0) {
-          ::close(fds[i]);
-          fds[i] = -1;
-        } else if (fds[i] < 0) {
-          open(fds[i], static_cast<int>(i) >= silent_);
-          ++reopened_;
-        }
-        if (fds[i] >= 0) ++open_count;
-      }
-      open_now_ = open_count;
-      if (Clock::now() >= next_byte) {
-        for (std::size_t i = static_cast<std::size_t>(silent_); i < fds.size(); ++i) {
-          if (fds[i] >= 0) ::send(fds[i], "a", 1, MSG_NOSIGNAL);
-        }
-        next_byte += slow_period_;
-      }
-    }
-    for (const int fd : fds) {
-      if (fd >= 0) ::close(fd);
-    }
-  }
-
-  int port_, silent_, slow_;
-  std::chrono::milliseconds slow_period_;
-  std::atomic<bool> stop_{false};
-  std::atomic<int> reopened_{0}, open_now_{0};
-  std::thread thread_;
 };
 
 // `VIMG serve ARGS... --port 0` with stdout and stderr in files of `dir`; stopped with SIGTERM at

@@ -2,7 +2,7 @@
 // `vimg serve --study` on the shipped matching example as a process (tests/web_server's
 // ServeProcess: --port 0, the URL read from its stdout), a results folder of the test's own, and
 // the participant's plan computed here with the trial-plan code, so that a test knows which image
-// each trial presents. Requests go over raw sockets (tests/web_server/raw_http.hpp), which send
+// each trial presents. Requests go over raw sockets (tests/net/raw_http.hpp), which send
 // "Host: localhost": this server's own page thus has Origin http://localhost.
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include "study/matching_row.hpp"
 #include "study/trial_plan.hpp"
 #include "tests/cli/run_command.hpp"
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/serve_process.hpp"
 
 namespace vimg::test {

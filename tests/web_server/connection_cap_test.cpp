@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/site_fixture.hpp"
 #include "web/server/descriptor_budget.hpp"
 

@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "storage/atomic_file.hpp"
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/site_fixture.hpp"
 #include "web/server/event_stream.hpp"
 #include "web/server/live_site.hpp"

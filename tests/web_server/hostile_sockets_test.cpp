@@ -6,7 +6,6 @@
 // nobody. The hostile sockets' pace is theirs; the test waits only on states (all hostile sockets
 // connected, each reply's bytes), and kPromptBound is generous: the server answers in milliseconds.
 // Also: a closed event stream gives its place back at once.
-#include <fcntl.h>
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -17,7 +16,8 @@
 #include <thread>
 #include <vector>
 
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/hostile_clients.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/site_fixture.hpp"
 #include "web/server/event_stream.hpp"
 
@@ -32,81 +32,6 @@ constexpr int kSlowSockets = 30;  // more than the 24 workers a thread-per-conne
 constexpr int kAnswers = 20;
 constexpr std::chrono::seconds kPromptBound{5};
 constexpr std::chrono::milliseconds kSlowBytePeriod{200};
-
-int connect_to(int port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(port));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (fd >= 0 && ::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0) return fd;
-  if (fd >= 0) ::close(fd);
-  return -1;
-}
-
-// The hostile clients, on a thread of their own: silent sockets never send; slow ones send a request
-// line and then one header byte every kSlowBytePeriod. A socket the server closed is opened again.
-class HostileClients {
- public:
-  explicit HostileClients(int port) : port_(port), thread_([this] { run(); }) {}
-  ~HostileClients() {
-    stop_ = true;
-    thread_.join();
-  }
-  // Whether every hostile socket has been connected at least once.
-  bool all_connected() const { return connected_ >= kSilentSockets + kSlowSockets; }
-  int reopened() const { return reopened_; }
-
- private:
-  struct Socket {
-    int fd = -1;
-    bool slow = false;
-  };
-  void open(Socket& s) {
-    s.fd = connect_to(port_);
-    if (s.fd >= 0 && s.slow) ::send(s.fd, "GET / HTTP/1.1\r\nX-Slow: ", 24, MSG_NOSIGNAL);
-    if (s.fd >= 0) ::fcntl(s.fd, F_SETFL, O_NONBLOCK);
-  }
-  void run() {
-    std::vector<Socket> sockets(kSilentSockets + kSlowSockets);
-    for (int i = 0; i < kSilentSockets + kSlowSockets; ++i) {
-      sockets[static_cast<std::size_t>(i)].slow = i >= kSilentSockets;
-      open(sockets[static_cast<std::size_t>(i)]);
-      if (sockets[static_cast<std::size_t>(i)].fd >= 0) ++connected_;
-    }
-    auto next_byte = Clock::now() + kSlowBytePeriod;
-    while (!stop_) {
-      std::vector<pollfd> fds;
-      for (const Socket& s : sockets) fds.push_back({s.fd, POLLIN, 0});
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(next_byte - Clock::now());
-      ::poll(fds.data(), fds.size(), static_cast<int>(std::max<std::int64_t>(0, left.count())));
-      for (std::size_t i = 0; i < sockets.size(); ++i) {
-        char scratch[512];
-        if (sockets[i].fd < 0 || (fds[i].revents != 0 && ::recv(sockets[i].fd, scratch, sizeof scratch, 0) <= 0)) {
-          if (sockets[i].fd >= 0) ::close(sockets[i].fd);
-          open(sockets[i]);  // the server closed it: come back at once
-          ++reopened_;
-          if (connected_ < kSilentSockets + kSlowSockets && sockets[i].fd >= 0) ++connected_;
-        }
-      }
-      if (Clock::now() >= next_byte) {
-        for (const Socket& s : sockets) {
-          if (s.slow && s.fd >= 0) ::send(s.fd, "a", 1, MSG_NOSIGNAL);
-        }
-        next_byte += kSlowBytePeriod;
-      }
-    }
-    for (const Socket& s : sockets) {
-      if (s.fd >= 0) ::close(s.fd);
-    }
-  }
-
-  int port_;
-  std::atomic<bool> stop_{false};
-  std::atomic<int> connected_{0};
-  std::atomic<int> reopened_{0};
-  std::thread thread_;
-};
 
 // One request; the status, or 0 when no reply came within kPromptBound.
 int answered_promptly(int port, const std::string& request) {
@@ -130,7 +55,7 @@ TEST_F(HostileSockets, AParticipantIsAnsweredBesideSilentAndSlowSockets) {
   options.api_post_paths = {"/api/answer"};
   server_ = std::make_unique<WebServer>(options);
   ASSERT_FALSE(server_->start());
-  HostileClients hostile(port());
+  HostileClients hostile(port(), kSilentSockets, kSlowSockets, kSlowBytePeriod);
   while (!hostile.all_connected()) std::this_thread::yield();  // a state: every hostile socket is in
   for (int trial = 1; trial <= kAnswers; ++trial) {
     const std::string body = "trial=" + std::to_string(trial);

@@ -12,7 +12,7 @@
 #include <thread>
 #include <vector>
 
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/site_fixture.hpp"
 
 namespace vimg::test {

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/site_fixture.hpp"
 #include "tests/web_server/stub_api.hpp"
 #include "web/server/http_message.hpp"

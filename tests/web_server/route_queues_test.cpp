@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/site_fixture.hpp"
 #include "tests/web_server/stub_api.hpp"
 

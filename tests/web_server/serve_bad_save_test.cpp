@@ -10,7 +10,7 @@
 #include <string>
 
 #include "storage/atomic_file.hpp"
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/serve_output.hpp"
 
 namespace vimg::test {

@@ -12,7 +12,7 @@
 
 #include "storage/atomic_file.hpp"
 #include "tests/cli/run_command.hpp"
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/serve_process.hpp"
 
 namespace vimg::test {

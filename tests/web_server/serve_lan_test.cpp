@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/serve_output.hpp"
 #include "web/server/terminal_qr.hpp"
 

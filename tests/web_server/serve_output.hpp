@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/serve_process.hpp"
 
 namespace vimg::test {

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "tests/child_process.hpp"
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "web/site_builder/web_site.hpp"
 
 namespace vimg::test {

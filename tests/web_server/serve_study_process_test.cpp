@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "tests/child_process.hpp"
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/serve_process.hpp"
 
 namespace vimg::test {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "tests/web_server/site_fixture.hpp"
 
 namespace vimg::test {

@@ -19,7 +19,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "tests/web_server/raw_http.hpp"
+#include "tests/net/raw_http.hpp"
 #include "web/server/web_server.hpp"
 
 namespace vimg::test {

@@ -3,7 +3,9 @@
 // method) to 127.0.0.1:PORT and reads what comes back: how an attacker or curl --path-as-is talks.
 // Reads block; each wait ends after kHangBound at the latest, which only bounds a hang (a broken
 // server, or an event that never comes while keep-alive comments do), it times nothing.
+// The raw-socket helpers of the server's tests and of bench/study_load (with tests/net/hostile_clients.hpp).
 #include <arpa/inet.h>
+#include <fcntl.h>
 #include <poll.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -12,10 +14,27 @@
 #include <cctype>
 #include <chrono>
 #include <cerrno>
+#include <cstdint>
 #include <map>
 #include <string>
 
 namespace vimg::test {
+
+// A TCP connection to 127.0.0.1:PORT (non-blocking once connected when asked); -1 when it fails.
+inline int connect_loopback(int port, bool non_blocking = false) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) return -1;
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(port));
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0) {
+    ::close(fd);
+    return -1;
+  }
+  if (non_blocking) ::fcntl(fd, F_SETFL, O_NONBLOCK);
+  return fd;
+}
 
 inline constexpr std::chrono::seconds kHangBound{60};
 
@@ -27,14 +46,7 @@ struct HttpResponse {
 
 class RawConnection {
  public:
-  explicit RawConnection(int port) {
-    fd_ = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    connected_ = connect(fd_, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0;
-  }
+  explicit RawConnection(int port) : fd_(connect_loopback(port)), connected_(fd_ >= 0) {}
   ~RawConnection() { if (fd_ >= 0) close(fd_); }
   RawConnection(const RawConnection&) = delete;
   RawConnection& operator=(const RawConnection&) = delete;
