@@ -1,5 +1,5 @@
 // The render thread never allocates (player/realtime_renderer.hpp), touch-latency compensation on:
-// a counting operator new (this test binary's, per thread) shows that no block of the real-time
+// a counting operator new (tests/counting_new: this test binary's, per thread) shows that no block of the real-time
 // loop allocates once it runs, with ten fingers moving and the learned predictor on, at 8 and
 // 48 kHz. The count is read by the sink on the render thread at each write().
 #include <gtest/gtest.h>
@@ -14,46 +14,7 @@
 
 #include "player/realtime_renderer.hpp"
 #include "render_support.hpp"
-
-namespace {
-thread_local std::uint64_t allocations_on_this_thread = 0;
-}  // namespace
-
-// Every form, so that each allocation is counted and each pair matches (malloc and free underneath;
-// under ASan the sanitizer still sees every block through them).
-namespace {
-void* counted(std::size_t size, std::size_t align = 0) noexcept {
-  ++allocations_on_this_thread;
-  if (size == 0) size = 1;
-  if (align <= alignof(std::max_align_t)) return std::malloc(size);
-  return std::aligned_alloc(align, (size + align - 1) / align * align);
-}
-void* or_throw(void* p) {
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return or_throw(counted(n)); }
-void* operator new[](std::size_t n) { return or_throw(counted(n)); }
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept { return counted(n); }
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept { return counted(n); }
-void* operator new(std::size_t n, std::align_val_t a) { return or_throw(counted(n, static_cast<std::size_t>(a))); }
-void* operator new[](std::size_t n, std::align_val_t a) { return or_throw(counted(n, static_cast<std::size_t>(a))); }
-void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept { return counted(n, static_cast<std::size_t>(a)); }
-void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept { return counted(n, static_cast<std::size_t>(a)); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+#include "tests/counting_new/counting_new.hpp"
 
 namespace vimg {
 namespace {
@@ -65,8 +26,8 @@ class CountingSink final : public DriveSink {
   void close() override {}
   void write(std::span<const float>, double) override {
     const std::uint64_t n = blocks_.load(std::memory_order_relaxed) + 1;
-    if (n == kSettled) at_settled_.store(allocations_on_this_thread, std::memory_order_relaxed);
-    if (n >= kSettled) now_.store(allocations_on_this_thread, std::memory_order_relaxed);
+    if (n == kSettled) at_settled_.store(test::allocations_on_this_thread(), std::memory_order_relaxed);
+    if (n >= kSettled) now_.store(test::allocations_on_this_thread(), std::memory_order_relaxed);
     blocks_.store(n, std::memory_order_release);
   }
   std::uint64_t blocks() const { return blocks_.load(std::memory_order_acquire); }
@@ -114,9 +75,9 @@ TEST(LiveAllocation, NoBlockOfTheRealTimeLoopAllocatesWithTenPredictedFingers) {
 
 // The counter counts: a vector grown on this thread is seen.
 TEST(LiveAllocation, TheCounterSeesAnAllocation) {
-  const std::uint64_t before = allocations_on_this_thread;
+  const std::uint64_t before = test::allocations_on_this_thread();
   std::vector<int>* v = new std::vector<int>(100);
-  const std::uint64_t after = allocations_on_this_thread;
+  const std::uint64_t after = test::allocations_on_this_thread();
   delete v;
   EXPECT_GE(after - before, 2u);
 }

@@ -4,7 +4,7 @@
 // fingers circling on the smiley at 120 Hz events with the learned predictor on (the page's
 // default), events queued with their own time, some already past and some due inside the next
 // block, fingers that rest in silence and that lift and land again. A counting operator new (this
-// binary's, as tests/player/live_allocation_test.cpp's) counts every allocation of each block's
+// binary's, tests/counting_new, as tests/player/live_allocation_test.cpp's) counts every allocation of each block's
 // calls after a warm-up of kWarmUpBlocks; the count must be zero. The stream's clock is the
 // samples': nothing here depends on the machine's timing.
 //
@@ -27,44 +27,7 @@
 #include "storage/image_io.hpp"
 #include "storage/vsc/vsc_image.hpp"
 #include "web/wasm/web_renderer.hpp"
-
-namespace {
-thread_local std::uint64_t allocations_on_this_thread = 0;
-
-// Every form, so that each allocation is counted and each pair matches (malloc and free underneath;
-// under ASan the sanitizer still sees every block through them).
-void* counted(std::size_t size, std::size_t align = 0) noexcept {
-  ++allocations_on_this_thread;
-  if (size == 0) size = 1;
-  if (align <= alignof(std::max_align_t)) return std::malloc(size);
-  return std::aligned_alloc(align, (size + align - 1) / align * align);
-}
-void* or_throw(void* p) {
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return or_throw(counted(n)); }
-void* operator new[](std::size_t n) { return or_throw(counted(n)); }
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept { return counted(n); }
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept { return counted(n); }
-void* operator new(std::size_t n, std::align_val_t a) { return or_throw(counted(n, static_cast<std::size_t>(a))); }
-void* operator new[](std::size_t n, std::align_val_t a) { return or_throw(counted(n, static_cast<std::size_t>(a))); }
-void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept { return counted(n, static_cast<std::size_t>(a)); }
-void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept { return counted(n, static_cast<std::size_t>(a)); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+#include "tests/counting_new/counting_new.hpp"
 
 namespace vimg {
 namespace {
@@ -155,11 +118,11 @@ struct LiveRun {
   }
   void block(std::size_t b) {
     const double start_s = renderer.live_time_s();
-    const std::uint64_t before = allocations_on_this_thread;
+    const std::uint64_t before = test::allocations_on_this_thread();
     feeder.before_block(renderer, start_s, start_s + static_cast<double>(kBlockFrames) / kRateHz);
     const std::vector<float>& out = renderer.live_render(kBlockFrames);
     const std::size_t contacts = renderer.live_contacts();
-    const std::uint64_t made = allocations_on_this_thread - before;
+    const std::uint64_t made = test::allocations_on_this_thread() - before;
     if (b >= kWarmUpBlocks && made > 0) {
       allocations_after_warm_up += made;
       first_allocating_block = std::min(first_allocating_block, b);
@@ -220,9 +183,9 @@ TEST(WebLiveAllocation, TheScheduleLiftsLandsAndRestsEveryFinger) {
 
 // The counter counts: a vector made on this thread is seen.
 TEST(WebLiveAllocation, TheCounterSeesAnAllocation) {
-  const std::uint64_t before = allocations_on_this_thread;
+  const std::uint64_t before = test::allocations_on_this_thread();
   std::vector<int>* v = new std::vector<int>(100);
-  const std::uint64_t after = allocations_on_this_thread;
+  const std::uint64_t after = test::allocations_on_this_thread();
   delete v;
   EXPECT_GE(after - before, 2u);
 }
