@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <thread>
 
 namespace vimg::test {
 
@@ -37,6 +38,17 @@ inline int connect_loopback(int port, bool non_blocking = false) {
 }
 
 inline constexpr std::chrono::seconds kHangBound{60};
+
+// Waits until condition() holds (a state, not a time); false only after kHangBound (a hang).
+template <class Condition>
+bool wait_for(Condition condition) {
+  const auto give_up = std::chrono::steady_clock::now() + kHangBound;
+  while (!condition()) {
+    if (std::chrono::steady_clock::now() > give_up) return false;
+    std::this_thread::yield();
+  }
+  return true;
+}
 
 struct HttpResponse {
   int status = 0;  // 0: no response (the connection closed or failed first)

@@ -20,20 +20,9 @@
 namespace vimg::test {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using ConnectionCap = SiteFixture;
 
 constexpr int kCap = 4;
-
-template <class Condition>
-bool wait_for(Condition condition) {
-  const auto give_up = Clock::now() + kHangBound;
-  while (!condition()) {
-    if (Clock::now() > give_up) return false;
-    std::this_thread::yield();
-  }
-  return true;
-}
 
 // Seen to fail (the 503 was already there before the request was sent) with the old refusal put
 // back in HttpEngine's admit: the 503 written at accept and the socket closed at once.

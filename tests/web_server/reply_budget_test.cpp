@@ -18,7 +18,6 @@
 namespace vimg::test {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using ReplyBudget = SiteFixture;
 
 constexpr std::size_t kFileBytes = std::size_t{24} << 20;
@@ -28,16 +27,6 @@ constexpr int kSlowReaders = 20;
 void sparse_file(const fs::path& path, std::size_t bytes) {
   { std::ofstream(path, std::ios::binary); }
   fs::resize_file(path, bytes);
-}
-
-template <class Condition>
-bool wait_for(Condition condition) {
-  const auto give_up = Clock::now() + kHangBound;
-  while (!condition()) {
-    if (Clock::now() > give_up) return false;
-    std::this_thread::yield();
-  }
-  return true;
 }
 
 // 20 readers of one 24 MiB file that never read hold one copy (24 MiB, not 480); another file
