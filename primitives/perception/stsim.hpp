@@ -1,7 +1,7 @@
 #pragma once
 // ST-SIM, the spectral-temporal similarity of a distorted vibrotactile signal to a reference
 // (Hassen and Steinbach, IEEE Transactions on Haptics 2020), computed as the reference
-// implementation does (the `vibromaf` package, vibromaf/metrics/stsim.py; docs/perception.md):
+// implementation does (the `vibromaf` package, vibromaf/metrics/stsim.py; docs/stsim.md):
 //   signals sampled at 8 kHz, cut into blocks of 512 samples (a last partial block is dropped);
 //   spectral term: per block the orthonormal DCT-II in dB, 20 log10 |X_k|, minus the perceptual
 //     threshold (vibrotactile_threshold.hpp), through the normal CDF with a 12 dB scale (the

@@ -1,4 +1,4 @@
-// ST-SIM's properties by design (docs/perception.md): identical signals give 1, the temporal term
+// ST-SIM's properties by design (docs/stsim.md): identical signals give 1, the temporal term
 // ignores level, a negative temporal term gives 0, the DCT is the orthonormal DCT-II.
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The classic stimuli of vibrotactile psychophysics at 8 kHz: sines at a sensation level above the
 // published detection threshold (published_figures.hpp: never the model's own), raised-cosine onset
-// and offset ramps, with or without a silent gap.
+// and offset ramps, with or without a silent gap, steady or as a rhythm of bursts.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -50,6 +50,21 @@ inline std::vector<double> render_tone(const Tone& t, const LevelCalibration& c 
     const double ramp = std::min({1.0, s / t.ramp_s, (t.duration_s - s) / t.ramp_s});
     const double gain = 0.5 - 0.5 * std::cos(std::numbers::pi * ramp);
     x[i] = gain * amplitude * std::sin(omega * s + t.phase_rad);
+  }
+  return x;
+}
+
+// A rhythm: the tone's duration cut into `pulses` bursts of the tone (each with its ramps) and
+// pulses - 1 silences as long as a burst; 1 pulse is the steady tone.
+inline std::vector<double> render_pulses(const Tone& t, int pulses, const LevelCalibration& c = strong_actuator()) {
+  Tone burst = t;
+  burst.duration_s = t.duration_s / static_cast<double>(2 * pulses - 1);
+  burst.ramp_s = std::min(t.ramp_s, burst.duration_s / 4.0);
+  const std::vector<double> one = render_tone(burst, c);
+  std::vector<double> x(static_cast<std::size_t>(t.duration_s * 8000.0), 0.0);
+  for (int k = 0; k < pulses; ++k) {
+    const auto start = static_cast<std::size_t>(2.0 * k * burst.duration_s * 8000.0);
+    for (std::size_t i = 0; i < one.size() && start + i < x.size(); ++i) x[start + i] = one[i];
   }
   return x;
 }

@@ -1,0 +1,215 @@
+// Identification of rendered stimuli against published identification figures
+// (tests/data/psychophysics/published_figures.csv, README.md there): sets of tones and rhythms are
+// synthesised at sensation levels above the published threshold (never the model's own), analysed
+// (analyse_discrimination), compared (cue_matrix) and identified (identification_confusion), the
+// path `vimg compare` takes; the information transfer of the predicted matrix is checked against a
+// direct mutual-information sum written here. Every check says its kind (docs/perception.md):
+//   [calibration]    kContextNoisePerDPrime was set on Rabinowitz et al.'s ranges (one-dimensional
+//                    sets 1-2 bits, three-dimensional 4-5), so those checks test the rendered path
+//                    (threshold, summation, cues), not a prediction;
+//   [out of sample]  nothing was set on Azadi & Jones's nine tactons.
+// The stimuli's values are ours: the sources' abstracts give the dimensions, not the values
+// (docs/perception.md, "Identification of rendered sets").
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "primitives/perception/identification_choice.hpp"
+#include "primitives/perception/information_transfer.hpp"
+#include "primitives/random/splitmix64.hpp"
+#include "tests/perception/tone_signals.hpp"
+
+namespace vimg {
+namespace {
+
+using test::render_pulses;
+using test::strong_actuator;
+using test::Tone;
+
+constexpr const char* kCalibration = "[calibration] ";
+constexpr const char* kOutOfSample = "[out of sample] ";
+
+// One stimulus of a set: a tone at a sensation level above the published threshold, steady
+// (pulses 1) or as a rhythm.
+struct Stimulus {
+  double frequency_hz = 250.0;
+  double sensation_level_db = 30.0;
+  int pulses = 1;
+};
+
+// The path of `vimg compare` after rendering: features, cue matrix, identification.
+PerceptionMatrix identify(const std::vector<Stimulus>& set) {
+  std::vector<DiscriminationFeatures> features;
+  for (const Stimulus& s : set)
+    features.push_back(analyse_discrimination(render_pulses(Tone{s.frequency_hz, s.sensation_level_db}, s.pulses), strong_actuator()));
+  return identification_confusion(cue_matrix(features));
+}
+
+// Mutual information as its definition's double sum, every image presented alike:
+// sum_ij p(i) p(j|i) log2(p(j|i) / q(j)), q(j) = sum_i p(i) p(j|i). Written apart from
+// information_transfer_bits, against which it is checked.
+double direct_mutual_information(const PerceptionMatrix& p) {
+  const double presented = 1.0 / static_cast<double>(p.size());
+  std::vector<double> chosen(p.size(), 0.0);
+  for (const auto& row : p)
+    for (std::size_t j = 0; j < row.size(); ++j) chosen[j] += presented * row[j];
+  double bits = 0.0;
+  for (const auto& row : p)
+    for (std::size_t j = 0; j < row.size(); ++j)
+      if (row[j] > 0.0) bits += presented * row[j] * std::log2(row[j] / chosen[j]);
+  return bits;
+}
+
+double it_bits(const PerceptionMatrix& p) {
+  const double it = information_transfer_bits(p);
+  EXPECT_NEAR(it, direct_mutual_information(p), 1e-9);
+  return it;
+}
+
+double percent_correct(const PerceptionMatrix& p) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) sum += p[i][i];
+  return 100.0 * sum / static_cast<double>(p.size());
+}
+
+test::PublishedRange published(const std::string& quantity) {
+  const test::PublishedRange r = test::published_range(quantity, NAN);
+  EXPECT_LE(r.low, r.high) << quantity << ": no published row";
+  return r;
+}
+
+// n values from low to high, evenly on a log scale (geometric) or a linear one.
+std::vector<double> spread(double low, double high, std::size_t n, bool geometric) {
+  std::vector<double> v;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) / static_cast<double>(n - 1);
+    v.push_back(geometric ? low * std::pow(high / low, t) : low + (high - low) * t);
+  }
+  return v;
+}
+
+constexpr std::size_t kSetSizes[] = {3, 4, 6, 8, 12};
+
+// One dimension: n members over [low, high] of frequency (at 30 dB SL) or of sensation level (at
+// frequency_hz); IT within the published one-dimensional range at every size, and from 6 to 12
+// members within the published growth.
+void expect_one_dimension(const char* what, double low, double high, bool frequency, double frequency_hz = 250.0) {
+  const test::PublishedRange range = published("identification_information_transfer_bits_one_dimension");
+  const test::PublishedRange growth = published("identification_information_gain_bits_6_to_12_members");
+  double at_six = 0.0;
+  for (const std::size_t n : kSetSizes) {
+    std::vector<Stimulus> set;
+    for (const double v : spread(low, high, n, frequency)) set.push_back(frequency ? Stimulus{v, 30.0} : Stimulus{frequency_hz, v});
+    const double it = it_bits(identify(set));
+    std::printf("identification,%s %g-%g,%zu,%.3f,%g,%g\n", what, low, high, n, it, range.low, range.high);
+    EXPECT_TRUE(range.holds(it)) << kCalibration << what << " " << low << "-" << high << ", " << n << " members: " << it << " bits";
+    if (n == 6) at_six = it;
+    if (n == 12) {
+      EXPECT_TRUE(growth.holds(it - at_six)) << kCalibration << what << ": " << it - at_six << " bits from 6 to 12 members";
+    }
+  }
+}
+
+// Rabinowitz, Houtsma, Durlach & Delhorne (1987): frequency at equal sensation level over 2.6 and
+// 3.9 octaves; level over 30 and 40 dB at 250 Hz (Pacinian) and at 50 Hz.
+TEST(IdentificationConformance, OneDimensionalSetsOfFrequencyTransferOneToTwoBits) {
+  expect_one_dimension("frequency Hz", 40.0, 250.0, true);
+  expect_one_dimension("frequency Hz", 20.0, 300.0, true);
+}
+
+TEST(IdentificationConformance, OneDimensionalSetsOfLevelTransferOneToTwoBits) {
+  expect_one_dimension("level dB SL at 250 Hz", 15.0, 45.0, false, 250.0);
+  expect_one_dimension("level dB SL at 250 Hz", 10.0, 50.0, false, 250.0);
+  expect_one_dimension("level dB SL at 50 Hz", 10.0, 50.0, false, 50.0);
+}
+
+// Rabinowitz et al.'s three dimensions were intensity, frequency and contactor area; the model has
+// no spatial cue, so the third dimension here is rhythm (1 to 5 bursts in 1 s). The model falls
+// short of the published 4-5 bits: rhythms of 3 or more bursts a second are nearly the steady tone
+// to it (next test), so the third dimension adds about one bit where people's added two or more.
+// Pinned as a deviation (docs/perception.md): this fails when the model reaches the published
+// range, so that the docs are redone.
+TEST(IdentificationConformance, AThreeDimensionalSetFallsShortOfThePublishedFourToFiveBits) {
+  std::vector<Stimulus> set;
+  for (const double f : spread(40.0, 250.0, 5, true))
+    for (const double sl : spread(10.0, 50.0, 5, false))
+      for (const int pulses : {1, 2, 3, 4, 5}) set.push_back({f, sl, pulses});
+  const double it = it_bits(identify(set));
+  const test::PublishedRange range = published("identification_information_transfer_bits_three_dimensions");
+  std::printf("identification,three dimensions 5x5x5,125,%.3f,%g,%g\n", it, range.low, range.high);
+  EXPECT_LT(it, range.low) << kCalibration << "(pinned deviation) " << it << " bits: now within or above the published "
+                           << range.low << "-" << range.high << ": redo docs/perception.md";
+  EXPECT_GT(it, 2.5) << kCalibration << "(pinned deviation) " << it << " bits";
+}
+
+// Why: the envelope cue sees a gap through its dips only when the gap has signal within
+// kDipContextMs (50 ms) on both sides, and its slow envelope (400 ms) smooths bursts of 200 ms or
+// less into a ripple. So 2 bursts in 1 s (333 ms each) are far from the steady tone, 4 bursts
+// (143 ms and 143 ms gaps) barely apart. No published figure: a pinned property of the model.
+TEST(IdentificationConformance, RhythmsOfFourBurstsASecondAreBarelyApartFromTheSteadyTone) {
+  std::vector<DiscriminationFeatures> f;
+  for (const int pulses : {1, 2, 4}) f.push_back(analyse_discrimination(render_pulses(Tone{250.0, 30.0}, pulses), strong_actuator()));
+  const CueMatrix d = cue_matrix(f);
+  std::printf("identification,envelope JNDs from the steady tone,2 bursts %.1f,4 bursts %.1f\n", d[0][1][2], d[0][2][2]);
+  EXPECT_GT(d[0][1][2], 10.0) << "(pinned) 2 bursts against steady";
+  EXPECT_LT(d[0][2][2], 2.0) << "(pinned) 4 bursts against steady: now a cue, redo docs/perception.md";
+}
+
+// Azadi & Jones (2014): nine tactons over frequency, amplitude and temporal profile, each
+// presented 8 times. Ours: an orthogonal array (each value of each dimension in three tactons, two
+// tactons share at most one value): 40, 100, 250 Hz; 15, 25, 35 dB SL; 1, 2, 4 bursts in 1 s.
+std::vector<Stimulus> nine_tactons() {
+  const double f[] = {40.0, 100.0, 250.0};
+  const double sl[] = {15.0, 25.0, 35.0};
+  const int pulses[] = {1, 2, 4};
+  std::vector<Stimulus> set;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) set.push_back({f[a], sl[b], pulses[(a + b) % 3]});
+  return set;
+}
+
+// The IT a participant's 72 trials estimate (8 per tacton drawn from the predicted rows), averaged
+// over 2000 seeded participants: the estimate is biased upwards on so few trials (Miller-Madow:
+// about (9 - 1)^2 / (2 * 72 ln 2) = 0.64 bits), and the published 2.41 bits is such an estimate.
+double sampled_it_bits(const PerceptionMatrix& p, int presentations) {
+  SplitMix64 random(20140101);
+  constexpr int kParticipants = 2000;
+  double sum = 0.0;
+  for (int participant = 0; participant < kParticipants; ++participant) {
+    PerceptionMatrix counts(p.size(), std::vector<double>(p.size(), 0.0));
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      for (int t = 0; t < presentations; ++t) {
+        double u = random.unit();
+        std::size_t j = 0;
+        while (j + 1 < p.size() && u >= p[i][j]) u -= p[i][j++];
+        counts[i][j] += 1.0;
+      }
+    }
+    sum += information_transfer_bits(counts);
+  }
+  return sum / kParticipants;
+}
+
+// The model identifies our nine tactons better than Azadi & Jones's participants identified
+// theirs: pinned as a deviation (docs/perception.md). Their values are not in the abstract; ours
+// are 4 frequency JNDs and 5 level JNDs apart with two of three rhythms far apart, where the model
+// sees little context noise (few values per cue) and adds the cues as independent.
+TEST(IdentificationConformance, NineTactonsOverThreeDimensionsAreIdentifiedBetterThanPublished) {
+  const PerceptionMatrix p = identify(nine_tactons());
+  const double correct = percent_correct(p);
+  const double it = it_bits(p);
+  const double sampled = sampled_it_bits(p, 8);
+  const test::PublishedRange pc = published("identification_percent_correct_nine_tactons");
+  const test::PublishedRange bits = published("identification_information_transfer_bits_nine_tactons");
+  std::printf("identification,nine tactons,9,%.3f bits (72 trials: %.3f),%.1f %% correct,%g-%g %%\n", it, sampled, correct, pc.low, pc.high);
+  EXPECT_GT(correct, pc.high) << kOutOfSample << "(pinned deviation) " << correct << " % correct: now within " << pc.low << "-"
+                              << pc.high << ", redo docs/perception.md";
+  EXPECT_GT(sampled, bits.high) << kOutOfSample << "(pinned deviation) " << sampled << " bits estimated from 72 trials";
+  EXPECT_LT(correct, 99.0) << kOutOfSample << "(pinned deviation) " << correct << " % correct";
+}
+
+}  // namespace
+}  // namespace vimg
