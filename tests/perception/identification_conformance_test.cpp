@@ -93,6 +93,18 @@ std::vector<double> spread(double low, double high, std::size_t n, bool geometri
 
 constexpr std::size_t kSetSizes[] = {3, 4, 6, 8, 12};
 
+std::string fmt(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
+}
+
+// One line per figure on the test's output, for scripts/plot_perception_conformance.py:
+// identification,SET,MEMBERS,MODEL,PUBLISHED_LOW,PUBLISHED_HIGH
+void report(const std::string& set, std::size_t members, double model, const test::PublishedRange& r) {
+  std::printf("identification,%s,%zu,%.4f,%g,%g\n", set.c_str(), members, model, r.low, r.high);
+}
+
 // One dimension: n members over [low, high] of frequency (at 30 dB SL) or of sensation level (at
 // frequency_hz); IT within the published one-dimensional range at every size, and from 6 to 12
 // members within the published growth.
@@ -104,7 +116,7 @@ void expect_one_dimension(const char* what, double low, double high, bool freque
     std::vector<Stimulus> set;
     for (const double v : spread(low, high, n, frequency)) set.push_back(frequency ? Stimulus{v, 30.0} : Stimulus{frequency_hz, v});
     const double it = it_bits(identify(set));
-    std::printf("identification,%s %g-%g,%zu,%.3f,%g,%g\n", what, low, high, n, it, range.low, range.high);
+    report(std::string(what) + " " + fmt(low) + "-" + fmt(high), n, it, range);
     EXPECT_TRUE(range.holds(it)) << kCalibration << what << " " << low << "-" << high << ", " << n << " members: " << it << " bits";
     if (n == 6) at_six = it;
     if (n == 12) {
@@ -116,14 +128,14 @@ void expect_one_dimension(const char* what, double low, double high, bool freque
 // Rabinowitz, Houtsma, Durlach & Delhorne (1987): frequency at equal sensation level over 2.6 and
 // 3.9 octaves; level over 30 and 40 dB at 250 Hz (Pacinian) and at 50 Hz.
 TEST(IdentificationConformance, OneDimensionalSetsOfFrequencyTransferOneToTwoBits) {
-  expect_one_dimension("frequency Hz", 40.0, 250.0, true);
-  expect_one_dimension("frequency Hz", 20.0, 300.0, true);
+  expect_one_dimension("frequency (Hz)", 40.0, 250.0, true);
+  expect_one_dimension("frequency (Hz)", 20.0, 300.0, true);
 }
 
 TEST(IdentificationConformance, OneDimensionalSetsOfLevelTransferOneToTwoBits) {
-  expect_one_dimension("level dB SL at 250 Hz", 15.0, 45.0, false, 250.0);
-  expect_one_dimension("level dB SL at 250 Hz", 10.0, 50.0, false, 250.0);
-  expect_one_dimension("level dB SL at 50 Hz", 10.0, 50.0, false, 50.0);
+  expect_one_dimension("level at 250 Hz (dB SL)", 15.0, 45.0, false, 250.0);
+  expect_one_dimension("level at 250 Hz (dB SL)", 10.0, 50.0, false, 250.0);
+  expect_one_dimension("level at 50 Hz (dB SL)", 10.0, 50.0, false, 50.0);
 }
 
 // Rabinowitz et al.'s three dimensions were intensity, frequency and contactor area; the model has
@@ -139,7 +151,7 @@ TEST(IdentificationConformance, AThreeDimensionalSetFallsShortOfThePublishedFour
       for (const int pulses : {1, 2, 3, 4, 5}) set.push_back({f, sl, pulses});
   const double it = it_bits(identify(set));
   const test::PublishedRange range = published("identification_information_transfer_bits_three_dimensions");
-  std::printf("identification,three dimensions 5x5x5,125,%.3f,%g,%g\n", it, range.low, range.high);
+  report("3 dimensions: bits", set.size(), it, range);
   EXPECT_LT(it, range.low) << kCalibration << "(pinned deviation) " << it << " bits: now within or above the published "
                            << range.low << "-" << range.high << ": redo docs/perception.md";
   EXPECT_GT(it, 2.5) << kCalibration << "(pinned deviation) " << it << " bits";
@@ -153,7 +165,7 @@ TEST(IdentificationConformance, RhythmsOfFourBurstsASecondAreBarelyApartFromTheS
   std::vector<DiscriminationFeatures> f;
   for (const int pulses : {1, 2, 4}) f.push_back(analyse_discrimination(render_pulses(Tone{250.0, 30.0}, pulses), strong_actuator()));
   const CueMatrix d = cue_matrix(f);
-  std::printf("identification,envelope JNDs from the steady tone,2 bursts %.1f,4 bursts %.1f\n", d[0][1][2], d[0][2][2]);
+  std::printf("rhythm: envelope JNDs from the steady tone: 2 bursts %.1f, 4 bursts %.1f\n", d[0][1][2], d[0][2][2]);
   EXPECT_GT(d[0][1][2], 10.0) << "(pinned) 2 bursts against steady";
   EXPECT_LT(d[0][2][2], 2.0) << "(pinned) 4 bursts against steady: now a cue, redo docs/perception.md";
 }
@@ -204,7 +216,9 @@ TEST(IdentificationConformance, NineTactonsOverThreeDimensionsAreIdentifiedBette
   const double sampled = sampled_it_bits(p, 8);
   const test::PublishedRange pc = published("identification_percent_correct_nine_tactons");
   const test::PublishedRange bits = published("identification_information_transfer_bits_nine_tactons");
-  std::printf("identification,nine tactons,9,%.3f bits (72 trials: %.3f),%.1f %% correct,%g-%g %%\n", it, sampled, correct, pc.low, pc.high);
+  std::printf("nine tactons: %.3f bits of the matrix\n", it);
+  report("9 tactons: % correct", 9, correct, pc);
+  report("9 tactons: bits from 72 trials", 9, sampled, bits);
   EXPECT_GT(correct, pc.high) << kOutOfSample << "(pinned deviation) " << correct << " % correct: now within " << pc.low << "-"
                               << pc.high << ", redo docs/perception.md";
   EXPECT_GT(sampled, bits.high) << kOutOfSample << "(pinned deviation) " << sampled << " bits estimated from 72 trials";
