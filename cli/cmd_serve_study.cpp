@@ -86,9 +86,7 @@ int run_serve_study(const StudyServeArgs& a, const sigset_t& stop_signals) {
   options.site_dir = site.path();
   options.host = a.lan ? "0.0.0.0" : "127.0.0.1";
   options.port = a.port;
-  options.api = [&service](const web::ApiRequest& request) { return service.handle(request); };
-  options.api_post_paths = web::StudyService::post_paths();
-  options.api_files_held = [&service] { return service.open_trial_files(); };
+  service.install(options);  // its cheap refusals on the network thread, the rest on the workers
   if (!a.tls.empty()) {
     options.tls_cert_pem = a.tls[0];
     options.tls_key_pem = a.tls[1];

@@ -1,9 +1,11 @@
 // File replies' memory (docs/web.md, "Connections"): one copy per file, shared by every reply of
-// it, and a budget on what the copies hold at once (shrunk here to 32 MiB so that two 24 MiB
-// sparse files pass it; the default is kReplyBudgetBytes). Readers that never read keep their
-// replies' writes pending (the files are larger than the sockets' buffers take). Each test says
-// how it was seen to fail against a server broken on purpose.
+// it, a budget on what the copies hold at once (shrunk here to 32 MiB so that two 24 MiB sparse
+// files pass it; the default is kReplyBudgetBytes), and the wait for room of a request that finds
+// it full (its bound set per test; the default is kReplyBudgetWait). Readers that never read keep
+// their replies' writes pending (the files are larger than the sockets' buffers take). Each test
+// says how it was seen to fail against a server broken on purpose.
 #include <gtest/gtest.h>
+#include <sys/socket.h>
 
 #include <chrono>
 #include <fstream>
@@ -30,14 +32,17 @@ void sparse_file(const fs::path& path, std::size_t bytes) {
 }
 
 // 20 readers of one 24 MiB file that never read hold one copy (24 MiB, not 480); another file
-// that would pass the budget gets 503 with Retry-After; a whole reader of the first is served
+// that would pass the budget gets 503 with Retry-After (no wait for room here); a whole reader of the first is served
 // from the shared copy; once the slow readers have gone the copy is freed and the other file is
 // served. Seen to fail: with FileCopies::acquire's index lookup removed (no sharing), the second
 // slow reader got 503; with reserve() always true (no budget), the other file got 200.
 TEST_F(ReplyBudget, OneCopyPerFileWithinTheBudget) {
   sparse_file(site_ / "a.bin", kFileBytes);
   sparse_file(site_ / "b.bin", kFileBytes);
-  WebServer& server = start_server([](WebServerOptions& options) { options.limits.reply_budget_bytes = kBudgetBytes; });
+  WebServer& server = start_server([](WebServerOptions& options) {
+    options.limits.reply_budget_bytes = kBudgetBytes;
+    options.limits.reply_budget_wait = std::chrono::milliseconds(0);
+  });
   std::vector<std::unique_ptr<RawConnection>> slow;
   for (int i = 0; i < kSlowReaders; ++i) {
     slow.push_back(std::make_unique<RawConnection>(port()));
@@ -56,6 +61,73 @@ TEST_F(ReplyBudget, OneCopyPerFileWithinTheBudget) {
   ASSERT_TRUE(wait_for([&] { return server.reply_bytes_held() == 0; })) << server.reply_bytes_held();
   EXPECT_EQ(exchange(port(), "GET", "/b.bin").status, 200);
   EXPECT_EQ(server.reply_bytes_held(), 0u);
+}
+
+// Requests that find the budget full wait for room, holding no reply and no worker: a slow reader
+// of a.bin holds 24 of the 32 MiB; 8 readers of b.bin (more than the reading workers) wait, with
+// nothing more held, while the page is still answered; once the slow reader goes, its copy is
+// freed and each of the 8 is served b.bin whole (from one copy). Their wait is longer than the
+// test (kHangBound), so only the freed room ends it. Seen to fail (the first b.bin reader got 503
+// at once, so the server never counted it waiting) with serve_file's wait_for_room left false, as
+// before.
+TEST_F(ReplyBudget, RequestsThatFindTheBudgetFullAreServedOnceRoomIsFreed) {
+  constexpr int kWaiting = web::kRouteWorkerThreads * 2;
+  sparse_file(site_ / "a.bin", kFileBytes);
+  sparse_file(site_ / "b.bin", kFileBytes);
+  WebServer& server = start_server([](WebServerOptions& options) {
+    options.limits.reply_budget_bytes = kBudgetBytes;
+    options.limits.reply_budget_wait = kHangBound;
+  });
+  auto slow = std::make_unique<RawConnection>(port());
+  ASSERT_TRUE(slow->send_all("GET /a.bin HTTP/1.1\r\nHost: localhost\r\n\r\n"));
+  ASSERT_TRUE(slow->read_until("\r\n\r\n"));
+  std::vector<std::unique_ptr<RawConnection>> waiting;
+  for (int i = 0; i < kWaiting; ++i) {
+    waiting.push_back(std::make_unique<RawConnection>(port()));
+    ASSERT_TRUE(waiting.back()->send_all("GET /b.bin HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"));
+  }
+  ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == kWaiting; })) << server.counts().waiting_for_room;
+  EXPECT_EQ(server.reply_bytes_held(), kFileBytes) << "a request waiting for room holds none";
+  EXPECT_EQ(exchange(port(), "GET", "/index.html").status, 200) << "the waits hold no worker";
+  for (auto& connection : waiting) {
+    char byte = 0;
+    EXPECT_EQ(::recv(connection->fd(), &byte, 1, MSG_DONTWAIT), -1) << "answered while waiting for room";
+  }
+  slow.reset();  // it closes: its write fails, the copy of a.bin is freed
+  for (auto& connection : waiting) {
+    ASSERT_TRUE(connection->read_to_end());
+    const HttpResponse reply = parse_response(connection->received());
+    EXPECT_EQ(reply.status, 200);
+    EXPECT_EQ(reply.body.size(), kFileBytes);
+  }
+  EXPECT_EQ(server.counts().waiting_for_room, 0);
+  EXPECT_EQ(server.counts().room_waits_expired, 0);
+}
+
+// A request waits for room no longer than the reply budget wait (shrunk here to 300 ms): then it
+// gets 503 with Retry-After, while the slow reader still holds its copy and nothing else is held.
+// Seen to fail (no reply within the client's 60 s: the wait never ended) with the wait's timer
+// not armed in Session::wait_for_room.
+TEST_F(ReplyBudget, ARequestWaitsForRoomNoLongerThanTheBudgetWait) {
+  constexpr std::chrono::milliseconds kWait{300};
+  sparse_file(site_ / "a.bin", kFileBytes);
+  sparse_file(site_ / "b.bin", kFileBytes);
+  WebServer& server = start_server([&](WebServerOptions& options) {
+    options.limits.reply_budget_bytes = kBudgetBytes;
+    options.limits.reply_budget_wait = kWait;
+  });
+  RawConnection slow(port());
+  ASSERT_TRUE(slow.send_all("GET /a.bin HTTP/1.1\r\nHost: localhost\r\n\r\n"));
+  ASSERT_TRUE(slow.read_until("\r\n\r\n"));
+  const auto sent = std::chrono::steady_clock::now();
+  HttpResponse refused = exchange(port(), "GET", "/b.bin");
+  const auto waited = std::chrono::steady_clock::now() - sent;
+  EXPECT_EQ(refused.status, 503);
+  EXPECT_EQ(refused.headers["retry-after"], "1");
+  EXPECT_GE(waited, kWait) << "answered before its wait ended";
+  EXPECT_EQ(server.counts().room_waits_expired, 1);
+  EXPECT_EQ(server.counts().waiting_for_room, 0);
+  EXPECT_EQ(server.reply_bytes_held(), kFileBytes);
 }
 
 // HEAD of a file reads none of it: no copy, nothing held. Seen to fail (the budget held the file

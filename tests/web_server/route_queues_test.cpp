@@ -127,7 +127,8 @@ TEST_F(RouteQueues, TheRouteOfAClientThatHasGoneIsNotRun) {
 }
 
 // A route that throws answers 500, the log names the request's path and what was thrown, and the
-// server goes on. Seen to fail (the test process ended in std::terminate) with run_route's catch removed.
+// server goes on; so does a screen that throws (on the network thread). Seen to fail (the test
+// process ended in std::terminate) with run_route's catch removed.
 TEST_F(RouteQueues, AnExceptionInARouteAnswers500AndIsLogged) {
   StubApi api(root_ / "answers.txt");
   WebServer& server = start_server([&](WebServerOptions& options) { api.install(options); });
@@ -137,6 +138,13 @@ TEST_F(RouteQueues, AnExceptionInARouteAnswers500AndIsLogged) {
   EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const std::string& line) { return line.rfind("GET /api/throw 500 ", 0) == 0; }))
       << ::testing::PrintToString(lines);
   EXPECT_EQ(server.counts().routes_failed, 1);
+  EXPECT_EQ(exchange(port(), "GET", "/api/early-throw").status, 500);
+  EXPECT_TRUE(logged("GET /api/early-throw: failed: injected screen fault"));
+  EXPECT_EQ(server.counts().routes_failed, 2);
+  const HttpResponse early = exchange(port(), "GET", "/api/early");
+  EXPECT_EQ(early.status, 429);
+  EXPECT_EQ(early.body, "refused early");
+  EXPECT_EQ(server.counts().refused_early, 2) << "the refusal and the screen's 500";
   EXPECT_EQ(exchange(port(), "GET", "/index.html").status, 200);
   EXPECT_EQ(exchange(port(), "GET", "/api/state").status, 200);
 }

@@ -5,6 +5,8 @@
 //   GET  /api/count   200 with the number of times this route has run
 //   GET  /api/block   waits until `reads` opens (holds a reading worker)
 //   GET  /api/throw   throws std::runtime_error("injected fault")
+//   GET  /api/early   refused 429 by the screen (WebServerOptions::api_screen), on the network thread
+//   GET  /api/early-throw  the screen throws std::runtime_error("injected screen fault")
 //   POST /api/answer  writes the body to answers.txt and syncs it through the slow file layer:
 //                     the sync waits until `disk` opens (a disk whose fsync never returns)
 // Waits are on states (Gate::wait_for_waiters), with kHangBound only to end a hang.
@@ -16,6 +18,7 @@
 #include <condition_variable>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -62,6 +65,11 @@ class StubApi {
   void install(web::WebServerOptions& options) {
     options.api = [this](const web::ApiRequest& request) { return handle(request); };
     options.api_post_paths = {"/api/answer"};
+    options.api_screen = [](const web::ApiRequest& request) -> std::optional<web::ApiReply> {
+      if (request.path == "/api/early") return web::body_reply(429, "text/plain", "refused early");
+      if (request.path == "/api/early-throw") throw std::runtime_error("injected screen fault");
+      return std::nullopt;
+    };
   }
 
   web::ApiReply handle(const web::ApiRequest& request) {

@@ -11,13 +11,16 @@
 #include <boost/beast/core/tcp_stream.hpp>
 #include <atomic>
 #include <condition_variable>
+#include <cstdint>
 #include <deque>
+#include <exception>
 #include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <optional>
 #include <unordered_map>
+#include <vector>
 
 #include "web/server/http_engine.hpp"
 
@@ -33,6 +36,7 @@ class Connection {
   virtual void start() = 0;
   virtual void abort() = 0;           // closes the socket now
   virtual void events_changed() {}    // an event stream sends what is new
+  virtual void retry_for_room() {}    // a request waiting for room runs its route again
   // The server stops: a connection whose route is under way sends its reply and then closes;
   // any other closes now.
   virtual void stop_gracefully() { abort(); }
@@ -41,7 +45,23 @@ class Connection {
 struct AtomicCounts {
   std::atomic<int> open_connections{0};
   std::atomic<long> refused_busy{0}, closed_unanswered{0}, routes_queued{0}, routes_dropped{0}, routes_failed{0};
+  std::atomic<long> refused_early{0}, room_waits_expired{0};
+  std::atomic<int> waiting_for_room{0};
 };
+
+// A route (respond on a worker, screen on the network thread): its result, or 500 when it throws
+// (`failure` then says what).
+template <class Result>
+Result run_route(const std::function<Result(const HttpRequest&)>& route, const HttpRequest& request, std::string& failure) {
+  try {
+    return route(request);
+  } catch (const std::exception& e) {
+    failure = e.what();
+  } catch (...) {
+    failure = "an exception that is not a std::exception";
+  }
+  return text_reply(500, "the server could not answer this request (its log says why)");
+}
 
 // The routes of one client (one value of HttpRoutes::client_field) on one pool: one runs at a
 // time, the others wait here, on the network thread, costing no worker.
@@ -61,6 +81,11 @@ struct EngineState {
   std::optional<net::steady_timer> stop_deadline;  // while stopping: closes what is left
   AtomicCounts counts;
   std::unordered_map<std::string, ClientQueue> client_queues[2];  // [0]: reading pool, [1]: writing pool
+  // The requests waiting for room in the reply budget (each takes itself out when it stops
+  // waiting), and how many times the copies changed: a route that found no room and comes back
+  // after a change it did not see is run again at once instead of waiting.
+  std::unordered_map<Connection*, std::weak_ptr<Connection>> room_waiters;
+  std::uint64_t room_generation = 0;
   // Routes handed to a pool (or waiting for their client's turn) whose reply has not come back;
   // stop() waits for none to be left before it joins the pools.
   std::mutex pending_mutex;
@@ -102,6 +127,18 @@ struct EngineState {
   }
 
   const HttpLimits& limits() const { return routes.limits; }
+
+  // The copies changed (one freed, or one made): every request waiting for room runs its route again.
+  void wake_room_waiters() {
+    ++room_generation;
+    std::vector<std::weak_ptr<Connection>> waiting;
+    waiting.reserve(room_waiters.size());
+    for (const auto& [raw, weak] : room_waiters) waiting.push_back(weak);
+    room_waiters.clear();
+    for (const auto& weak : waiting) {
+      if (auto connection = weak.lock()) connection->retry_for_room();
+    }
+  }
 
   // A connection has closed (each calls this once).
   void closed(Connection* connection, bool refusal) {

@@ -4,9 +4,12 @@
 // and a budget on the bytes all copies hold at once. A copy lives while a reply holds it: the
 // last reply's write done (or its connection closed), it is freed and its bytes leave the budget.
 // A file rewritten since (another inode, size or time) gets a copy of its own; the old one lives
-// on for the replies still sending it. A copy that would pass the budget is not made: the request
-// gets 503 with Retry-After, and nothing waits.
-// Threads: any (the routes' workers); the budget is atomic, the index is locked.
+// on for the replies still sending it. A copy that would pass the budget is not made: the caller
+// is told (over_budget), and may try again when on_change() says a copy's bytes have left the
+// budget or a copy was made that it may share (the server's request then waits for room, holding
+// nothing: web/server/http_engine.hpp).
+// Threads: any (the routes' workers; a copy is freed on whichever thread drops it last); the budget
+// is atomic, the index and the hook are locked.
 #include <sys/types.h>
 
 #include <atomic>
@@ -34,9 +37,15 @@ class FileCopies {
  public:
   explicit FileCopies(std::size_t budget_bytes);
 
+  // Called each time a copy's bytes leave the budget (from the thread that frees it) and each time a
+  // copy is made (from acquire's); empty: nothing.
+  // Set before the first acquire and cleared before whatever it calls goes away.
+  void on_change(std::function<void()> hook);
+
   struct Copy {
     std::shared_ptr<const std::string> bytes;  // set when the reply can be sent
-    bool over_budget = false;                  // no room in the budget now: 503
+    bool over_budget = false;                  // no room in the budget now (room may come)
+    bool never_fits = false;                   // larger than the whole budget (with over_budget)
     std::string error;                         // the file could not be read (from `read`)
   };
   // The copy of `path` at `version`: the one a reply holds already, or one read now by `read`
@@ -44,7 +53,7 @@ class FileCopies {
   Copy acquire(const std::string& path, const FileVersion& version,
                const std::function<std::optional<std::string>(std::string& error)>& read);
 
-  std::size_t held_bytes() const { return held_->load(); }
+  std::size_t held_bytes() const { return budget_state_->held.load(); }
   std::size_t budget_bytes() const { return budget_; }
 
  private:
@@ -52,10 +61,18 @@ class FileCopies {
     FileVersion version;
     std::weak_ptr<const std::string> bytes;
   };
+  // The bytes held, and the hook told when some leave: shared with each copy's deleter, which
+  // gives its bytes back (a copy may outlive this index).
+  struct Budget {
+    std::atomic<std::size_t> held{0};
+    std::mutex hook_mutex;
+    std::function<void()> hook;
+    void changed();  // calls the hook
+    void release(std::size_t bytes);
+  };
   bool reserve(std::size_t bytes);
   std::size_t budget_;
-  // Shared with each copy's deleter, which gives its bytes back (a copy may outlive this index).
-  std::shared_ptr<std::atomic<std::size_t>> held_ = std::make_shared<std::atomic<std::size_t>>(0);
+  std::shared_ptr<Budget> budget_state_ = std::make_shared<Budget>();
   std::mutex mutex_;
   std::unordered_map<std::string, Entry> index_;
 };

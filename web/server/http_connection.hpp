@@ -3,7 +3,8 @@
 // http_engine.cpp only (Beast's templates are compiled there and nowhere else). Everything here runs
 // on the network thread, except the route, which a worker runs and whose reply is posted back.
 //   connect -> [TLS handshake] -> header (header deadline) -> refuse? -> body (body deadline)
-//   -> route on a worker (dropped if the client goes meanwhile) -> reply (write deadline)
+//   -> screen? -> route on a worker (dropped if the client goes meanwhile)
+//   [-> no room: wait for room (reply budget wait) -> route again] -> reply (write deadline)
 //   -> keep-alive: header again | close | event stream (until its lifetime ends)
 #include <sys/socket.h>
 
@@ -17,7 +18,10 @@
 #include <boost/beast/http/string_body.hpp>
 #include <array>
 #include <cerrno>
+#include <chrono>
+#include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <type_traits>
 
@@ -31,18 +35,6 @@ using TlsStream = net::ssl::stream<beast::tcp_stream>;
 
 // Room for the whole header, the largest body and a pipelined request's start.
 inline constexpr std::size_t kMaxBufferedBytes = 32768;
-
-// The route, on a worker: its reply, or 500 when it throws (`failure` then says what).
-inline HttpReply run_route(const HttpRoutes& routes, const HttpRequest& request, std::string& failure) {
-  try {
-    return routes.respond(request);
-  } catch (const std::exception& e) {
-    failure = e.what();
-  } catch (...) {
-    failure = "an exception that is not a std::exception";
-  }
-  return text_reply(500, "the server could not answer this request (its log says why)");
-}
 
 // The request's framing is one the server will read: a single Content-Length, or chunked alone.
 // Anything else (both, a length twice, a list of lengths, another transfer coding) could be read
@@ -61,7 +53,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
 
  public:
   Session(EngineState& engine, Stream stream)
-      : engine_(engine), stream_(std::move(stream)), events_(engine.io) {}
+      : engine_(engine), stream_(std::move(stream)), events_(engine.io), room_timer_(engine.io) {}
 
   void start() override {
     if constexpr (kTls) {
@@ -78,8 +70,18 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
   void abort() override { finish(); }
 
   void stop_gracefully() override {
+    if (waiting_for_room_) {  // its 503 now
+      stop_waiting_for_room();
+      return route_done(std::move(waiting_reply_));
+    }
     if (in_flight_) return;  // send() closes after the reply (the engine is stopping)
     finish();
+  }
+
+  void retry_for_room() override {
+    if (!waiting_for_room_ || finished_) return;
+    stop_waiting_for_room();
+    queue_route();
   }
 
   void events_changed() override {
@@ -103,6 +105,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     // empty limit as greater, so "no limit" is the largest one.)
     parser_->body_limit(std::numeric_limits<std::uint64_t>::max());
     request_ = HttpRequest{};
+    room_deadline_.reset();
     // One deadline for the whole header, however its bytes trickle (not one per read).
     tcp_layer().expires_after(engine_.limits().header_deadline);
     http::async_read_header(stream_, buffer_, *parser_, [self = this->shared_from_this()](beast::error_code ec, std::size_t) {
@@ -172,13 +175,28 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     });
   }
 
-  // The route runs on a worker of its queue; the reply comes back to this thread. Meanwhile the
-  // socket is watched: a client that closes (or half-closes) is dropped and its route not run.
+  // Refused at once by the screen, or the route runs on a worker of its queue and the reply comes
+  // back to this thread. Meanwhile the socket is watched: a client that closes (or half-closes) is
+  // dropped and its route not run.
   void dispatch() {
     tcp_layer().expires_never();
+    if (engine_.routes.screen) {
+      std::string failure;
+      auto refusal = run_route(engine_.routes.screen, request_, failure);
+      log_failure(failure);
+      if (refusal) {
+        ++engine_.counts.refused_early;
+        return send(std::move(*refusal), false);
+      }
+    }
     in_flight_ = true;
     watch_for_departure();
+    queue_route();
+  }
+
+  void queue_route() {
     const int pool = request_.method == "POST" ? 1 : 0;
+    queued_generation_ = engine_.room_generation;
     ++engine_.counts.routes_queued;
     engine_.run_route_job(pool, client_, [self = this->shared_from_this(), pool]() mutable {
       HttpReply reply;
@@ -186,21 +204,61 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
       if (self->departed_.load()) {
         ++self->engine_.counts.routes_dropped;
       } else {
-        reply = run_route(self->engine_.routes, self->request_, failure);
+        reply = run_route(self->engine_.routes.respond, self->request_, failure);
       }
       EngineState& engine = self->engine_;
       net::post(engine.io, [self = std::move(self), reply = std::move(reply), failure = std::move(failure), pool]() mutable {
         self->engine_.route_job_done(pool, self->client_);
-        self->in_flight_ = false;
-        beast::error_code ignored;
-        self->tcp_layer().socket().cancel(ignored);  // the watch
-        if (!failure.empty()) {
-          ++self->engine_.counts.routes_failed;
-          if (self->engine_.routes.log_failure) self->engine_.routes.log_failure(self->request_, failure);
-        }
-        self->send(std::move(reply), false);
+        self->log_failure(failure);
+        self->route_done(std::move(reply));
       });
     });
+  }
+
+  void log_failure(const std::string& failure) {
+    if (failure.empty()) return;
+    ++engine_.counts.routes_failed;
+    if (engine_.routes.log_failure) engine_.routes.log_failure(request_, failure);
+  }
+
+  // The route's reply: sent, or (no room for it yet) the route runs again each time the copies
+  // change, until the reply budget wait has passed since it first found none.
+  void route_done(HttpReply reply) {
+    if (reply.wait_for_room && !finished_ && !engine_.stopping) {
+      const auto now = std::chrono::steady_clock::now();
+      if (!room_deadline_) room_deadline_ = now + engine_.limits().reply_budget_wait;
+      if (now < *room_deadline_) {
+        if (engine_.room_generation != queued_generation_) return queue_route();  // changed meanwhile
+        return wait_for_room(std::move(reply));
+      }
+      ++engine_.counts.room_waits_expired;
+    }
+    in_flight_ = false;
+    beast::error_code ignored;
+    tcp_layer().socket().cancel(ignored);  // the watch
+    send(std::move(reply), false);
+  }
+
+  // On the network thread, with no worker and no reply bytes: the reply kept is the route's 503.
+  void wait_for_room(HttpReply reply) {
+    waiting_reply_ = std::move(reply);
+    waiting_for_room_ = true;
+    ++engine_.counts.waiting_for_room;
+    engine_.room_waiters.emplace(this, this->weak_from_this());
+    room_timer_.expires_at(*room_deadline_);
+    room_timer_.async_wait([self = this->shared_from_this()](beast::error_code ec) {
+      if (ec || !self->waiting_for_room_) return;
+      self->stop_waiting_for_room();
+      self->route_done(std::move(self->waiting_reply_));  // past the deadline: the 503
+    });
+  }
+
+  void stop_waiting_for_room() {
+    if (!waiting_for_room_) return;
+    waiting_for_room_ = false;
+    --engine_.counts.waiting_for_room;
+    engine_.room_waiters.erase(this);
+    room_timer_.cancel();
   }
 
   // Readable while the route runs: the peer's FIN (recv peeks 0) or an error means it has gone; a
@@ -305,6 +363,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
   void finish() {
     if (finished_) return;
     finished_ = true;
+    stop_waiting_for_room();
     tcp_layer().close();
     events_.close(engine_.routes.events);
     reply_.shared_body.reset();
@@ -321,6 +380,11 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
   std::string head_, continue_, sending_;
   std::array<char, 512> scratch_{};
   EventStreamWriter events_;
+  net::steady_timer room_timer_;  // the end of the wait for room
+  std::optional<std::chrono::steady_clock::time_point> room_deadline_;  // set when the request first waits
+  HttpReply waiting_reply_;  // while waiting for room: the route's 503, sent at the deadline
+  std::uint64_t queued_generation_ = 0;  // EngineState::room_generation when the route was queued
+  bool waiting_for_room_ = false;
   std::atomic<bool> departed_{false};  // set here, read by the worker about to run the route
   bool in_flight_ = false, writing_ = false, finished_ = false;
 };

@@ -171,7 +171,8 @@ int HttpEngine::max_connections() const {
 HttpEngineCounts HttpEngine::counts() const {
   const AtomicCounts& c = impl_->state.counts;
   return {c.open_connections.load(), c.refused_busy.load(), c.closed_unanswered.load(), c.routes_queued.load(),
-          c.routes_dropped.load(), c.routes_failed.load()};
+          c.routes_dropped.load(), c.routes_failed.load(), c.refused_early.load(), c.waiting_for_room.load(),
+          c.room_waits_expired.load()};
 }
 
 void HttpEngine::wake_event_streams() {
@@ -180,6 +181,12 @@ void HttpEngine::wake_event_streams() {
   net::post(s.state.io, [&s] {
     for (const auto& connection : s.open_connections()) connection->events_changed();
   });
+}
+
+void HttpEngine::retry_room_waiters() {
+  Impl& s = *impl_;
+  if (!s.running) return;
+  net::post(s.state.io, [&s] { s.state.wake_room_waiters(); });
 }
 
 void HttpEngine::stop() {
@@ -210,6 +217,7 @@ void HttpEngine::stop() {
   s.state.open.clear();
   s.state.client_queues[0].clear();
   s.state.client_queues[1].clear();
+  s.state.room_waiters.clear();
   s.state.connections = s.state.refusing = 0;
   s.state.counts.open_connections = 0;
 }

@@ -10,7 +10,10 @@
 // header deadline of connecting (or of its last reply) however slowly it trickles, its body
 // within the body deadline and max_body_bytes, at most the connection cap at once, shared with the
 // files the routes hold (web/server/descriptor_budget.hpp); one more is answered 503 once its
-// request head is read (web/server/busy_refusal.hpp). There is no bound per address: a lab's
+// request head is read (web/server/busy_refusal.hpp). A request refused by HttpRoutes::screen is
+// answered on the network thread before it waits for anything; one whose route found no room in
+// the reply budget waits for room on the network thread (no worker, no reply bytes held), up to
+// the limits' reply_budget_wait. There is no bound per address: a lab's
 // participants share one. stop() is graceful: the routes accepted run to their end and their
 // replies are sent, within the stop grace deadline. Beast's templates are compiled in
 // http_engine.cpp only.
@@ -29,7 +32,14 @@ struct HttpRoutes {
   // On the network thread, once a request's header is read: a reply at once (its body is never
   // read), or nothing to read the body (up to `max_body_bytes`) and call respond().
   std::function<std::optional<HttpReply>(const HttpRequest&)> refuse;
-  // On a worker: the reply. A reply with event_stream opened a stream of `events` (its cursor).
+  // On the network thread, once the whole request is read (its body too), before it waits for
+  // anything (a worker, its client's turn, a lock behind it): a reply at once, or nothing to run
+  // respond(). For the refusals that cost no file and no lock (the study's rate limit, a wrong
+  // key), so that a client flooding requests behind its own slow one is refused at once instead of
+  // queueing. Empty: nothing is refused here. One that throws answers 500, as respond() does.
+  std::function<std::optional<HttpReply>(const HttpRequest&)> screen;
+  // On a worker: the reply. A reply with event_stream opened a stream of `events` (its cursor); one
+  // with wait_for_room is run again by retry_room_waiters(), or sent after the wait.
   std::function<HttpReply(const HttpRequest&)> respond;
   // On the network thread: every reply sent, or refused before a route saw it.
   std::function<void(const HttpRequest&, const HttpReply&)> log;
@@ -71,6 +81,10 @@ class HttpEngine {
   HttpEngineCounts counts() const;
   // Each open event stream sends what was published since its cursor.
   void wake_event_streams();
+  // Room may have come (a file copy of the reply budget freed, or one made that a waiting request
+  // may share): the requests waiting for room run their route again. From any thread; nothing once
+  // stopped.
+  void retry_room_waiters();
   // Closes the listening socket, the idle connections and the event streams; the routes under way
   // run to their end and their replies are sent (within limits.stop_grace_deadline, then every
   // connection is closed); joins. Idempotent.

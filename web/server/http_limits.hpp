@@ -29,8 +29,10 @@ inline constexpr int kMaxRefusingConnections = 64;
 inline constexpr int kRouteWorkerThreads = 4;
 inline constexpr int kWriteWorkerThreads = 2;
 // The bytes of file copies the replies in flight hold at once (web/server/file_copies.hpp): one
-// copy per file, shared by every reply of it; a file whose copy would pass it gets 503.
+// copy per file, shared by every reply of it. A request whose copy would pass it waits, holding no
+// reply, until a copy is freed (or one it may share made), for kReplyBudgetWait at most; then 503.
 inline constexpr std::size_t kReplyBudgetBytes = std::size_t{128} << 20;
+inline constexpr std::chrono::seconds kReplyBudgetWait{10};
 // How long an event stream stays open; the page's EventSource then opens another (after the
 // stream's retry hint) and resumes at its Last-Event-ID.
 inline constexpr std::chrono::seconds kEventStreamLifetime{600};
@@ -51,6 +53,7 @@ struct HttpLimits {
   std::chrono::milliseconds closing_deadline = kClosingDeadline;
   int max_connections = kMaxConnections;
   std::size_t reply_budget_bytes = kReplyBudgetBytes;
+  std::chrono::milliseconds reply_budget_wait = kReplyBudgetWait;  // 0: 503 at once
   std::chrono::milliseconds event_stream_lifetime = kEventStreamLifetime;
   std::chrono::milliseconds stop_grace_deadline = kStopGraceDeadline;
 };
@@ -63,6 +66,9 @@ struct HttpEngineCounts {
   long routes_queued = 0;      // requests handed to a worker's queue
   long routes_dropped = 0;     // routes not run because their client had gone
   long routes_failed = 0;      // routes that threw (answered 500)
+  long refused_early = 0;      // requests refused before they waited for anything (HttpRoutes::screen)
+  int waiting_for_room = 0;    // requests waiting now for room in the reply budget (holding no reply)
+  long room_waits_expired = 0; // requests that waited kReplyBudgetWait in vain (answered 503)
 };
 
 }  // namespace vimg::web

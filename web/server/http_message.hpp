@@ -43,6 +43,11 @@ struct HttpReply {
   bool close = false;                                        // Connection: close after this reply
   bool event_stream = false;  // chunked, and the stream's messages follow (web/server/event_stream.hpp)
   std::int64_t stream_cursor = 0;
+  // The route found no room (the reply budget full, web/server/file_copies.hpp): the engine runs it
+  // again each time the copies change (HttpEngine::retry_room_waiters: one freed, or one made that
+  // it may share), holding no reply meanwhile, and sends this reply (a 503) only once
+  // HttpLimits::reply_budget_wait has passed since it first waited.
+  bool wait_for_room = false;
 
   std::string_view body_bytes() const { return shared_body ? std::string_view(*shared_body) : std::string_view(body); }
   std::size_t content_length() const { return head_only_bytes ? *head_only_bytes : body_bytes().size(); }

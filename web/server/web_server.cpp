@@ -75,6 +75,12 @@ struct WebServer::Impl {
     HttpRoutes r;
     r.refuse = [this](const HttpRequest& request) { return refusal(request); };
     r.respond = [this](const HttpRequest& request) { return respond(request); };
+    if (options.api && options.api_screen) {
+      r.screen = [this](const HttpRequest& request) -> std::optional<HttpReply> {
+        if (!to_api(request)) return std::nullopt;
+        return options.api_screen(request);
+      };
+    }
     r.log = [this](const HttpRequest& request, const HttpReply& reply) {
       const std::size_t bytes = request.method == "HEAD" || reply.event_stream ? 0 : reply.body_bytes().size();
       log(loggable(request.method) + " " + loggable(request.path.empty() ? request.target : request.path) + " " +
@@ -113,10 +119,14 @@ struct WebServer::Impl {
     return reply;
   }
 
+  // POST (refusal() lets through the API's paths only) and, with an API, /api/...
+  bool to_api(const HttpRequest& request) const {
+    return request.method == "POST" || (options.api && request.path.rfind("/api/", 0) == 0);
+  }
+
   HttpReply respond(const HttpRequest& request) {
-    if (request.method == "POST") return serve_api(request);
+    if (to_api(request)) return serve_api(request);
     if (request.path == "/events" && !options.api) return serve_events(request);
-    if (options.api && request.path.rfind("/api/", 0) == 0) return serve_api(request);
     return serve_file(request);
   }
 
@@ -189,9 +199,10 @@ struct WebServer::Impl {
       error = read.error;
       return std::move(read.bytes);
     });
-    if (copy.over_budget) {
+    if (copy.over_budget) {  // waits for room (the engine runs this again), then 503
       HttpReply busy = text_reply(503, "the server is busy (its reply budget is full); try again");
       busy.headers.emplace_back("Retry-After", "1");
+      busy.wait_for_room = !copy.never_fits;
       return busy;
     }
     if (!copy.bytes) return cannot_read(copy.error);
@@ -211,7 +222,11 @@ std::optional<std::string> WebServer::start() {
   s.site_root = fs::canonical(s.options.site_dir, ec);
   if (ec || !fs::is_directory(s.site_root)) return s.options.site_dir.string() + ": not a folder that can be served";
   const HttpEndpoint endpoint{s.options.host, s.options.port, s.options.tls_cert_pem.string(), s.options.tls_key_pem.string()};
-  if (auto problem = s.engine.start(endpoint)) return problem;
+  s.copies.on_change([&s] { s.engine.retry_room_waiters(); });
+  if (auto problem = s.engine.start(endpoint)) {
+    s.copies.on_change({});
+    return problem;
+  }
   s.running = true;
   return std::nullopt;
 }
@@ -236,6 +251,7 @@ void WebServer::stop() {
   if (!s.running.exchange(false)) return;
   s.events.close();
   s.engine.stop();
+  s.copies.on_change({});  // the copies still held (freed with the engine) call nothing
 }
 
 }  // namespace vimg::web

@@ -8,7 +8,8 @@
 //     nothing is ever listed;
 //   - bounded requests and connections (web/server/http_message.hpp, HttpLimits);
 //     a file beyond kMaxServedFileBytes is not served (500); a file is sent from one copy shared by
-//     every reply of it, within the reply budget (web/server/file_copies.hpp; beyond it, 503);
+//     every reply of it, within the reply budget (web/server/file_copies.hpp): a request that finds
+//     it full waits for room, holding no reply, up to HttpLimits::reply_budget_wait, then 503;
 //   - every response says Cache-Control: no-store (a page always fetches the latest save) and
 //     X-Content-Type-Options: nosniff; the Content-Type comes from web/server/content_type.hpp;
 //   - /events is the Server-Sent Events stream of the images' changes (web/server/event_stream.hpp),
@@ -17,7 +18,8 @@
 //     is never logged); a route that throws answers 500 and logs "METHOD PATH: failed: WHAT";
 //   - with an `api` (vimg serve --study, web/study_server/), GET of /api/... and POST of the paths
 //     in `api_post_paths` go to it instead; every other POST is refused as above; the api is called
-//     from several workers at once;
+//     from several workers at once; `api_screen`, when given, sees each of these requests first, on
+//     the network thread, before it waits for anything (HttpRoutes::screen);
 //   - with `tls_cert_pem` and `tls_key_pem`, HTTPS (a secure context on a LAN).
 // The server runs on threads of its own between start() and stop() (or the destructor).
 #include <cstddef>
@@ -51,6 +53,9 @@ struct WebServerOptions {
   // Receives each log line (without its newline); by default they go to stderr.
   std::function<void(const std::string&)> log_line;
   ApiHandler api;                           // empty: no /api/ (plain vimg serve)
+  // The API's cheap refusals (no file, no lock: a wrong key, the rate limit), run on the network
+  // thread as each request to the api arrives: a reply at once, or nothing to pass it to `api`.
+  std::function<std::optional<ApiReply>(const ApiRequest&)> api_screen;
   std::vector<std::string> api_post_paths;  // the only paths a POST may reach
   std::filesystem::path tls_cert_pem, tls_key_pem;  // both empty: plain HTTP
   // The files the api keeps open (participants' trial files): they share the descriptors with the

@@ -52,6 +52,16 @@ bool same_origin(const ApiRequest& request) {
   return request.origin == "http://" + request.host || request.origin == "https://" + request.host;
 }
 
+// The participant of ?participant=ID, or nothing when the query has none that is valid.
+std::optional<std::string> participant_of(const ApiRequest& request) {
+  const FormFields query = parse_form_text(request.query);
+  auto participant = query.get("participant");
+  if (!query.ok() || !participant || !valid_participant_id(*participant)) return std::nullopt;
+  return std::string(*participant);
+}
+
+ApiReply bad_participant() { return text_reply(400, "bad request: ?participant=ID (1 to 64 of A-Z a-z 0-9 _ -)"); }
+
 }  // namespace
 
 std::vector<fs::path> participant_trial_files(const fs::path& dir) {
@@ -87,34 +97,81 @@ void StudyService::say(const std::string& line) const {
   }
 }
 
-ApiReply StudyService::handle(const ApiRequest& request) {
+StudyService::Checked StudyService::check(const ApiRequest& request) const {
+  Checked c;
   const bool get = request.method == "GET" || request.method == "HEAD";
   if (request.path == "/api/answer") {
-    if (request.method != "POST") return text_reply(405, "method not allowed: an answer is a POST");
-    return answer(request);
+    if (request.method != "POST") return c.refuse(text_reply(405, "method not allowed: an answer is a POST"));
+    if (request.body.size() > kMaxAnswerBodyBytes) {
+      return c.refuse(text_reply(413, "payload too large: an answer is at most " + std::to_string(kMaxAnswerBodyBytes) + " bytes"));
+    }
+    if (!same_origin(request)) return c.refuse(text_reply(403, "forbidden: an answer must come from this server's own page (Origin)"));
+    AnswerParse parsed = parse_answer(parse_form_text(request.body), total_);
+    if (!parsed.answer) return c.refuse(text_reply(400, "bad request: " + parsed.error));
+    if (!keys_.is_participant_key(parsed.answer->participant, request.field(kApiKeyField))) {
+      return c.refuse(text_reply(403, "forbidden: wrong or missing key"));
+    }
+    c.answer = std::move(parsed.answer);
+    return c;
   }
-  if (!get) return text_reply(405, "method not allowed");
-  if (request.path == "/api/state") return state(request);
+  if (!get) return c.refuse(text_reply(405, "method not allowed"));
+  if (request.path == "/api/state") {
+    const auto participant = participant_of(request);
+    if (!participant) return c.refuse(bad_participant());
+    if (!keys_.is_participant_key(*participant, request.field(kApiKeyField))) return c.refuse(text_reply(403, "forbidden: wrong or missing key"));
+    c.participant = *participant;
+    return c;
+  }
   if (request.path == "/api/progress" || request.path == "/api/report" || request.path == "/api/link") {
-    if (!keys_.is_researcher_key(request.field(kApiKeyField))) return text_reply(403, "forbidden: the researcher's key is wrong or missing");
-    if (request.path == "/api/progress") return progress();
-    if (request.path == "/api/report") return report();
-    return link(request);
+    if (!keys_.is_researcher_key(request.field(kApiKeyField))) return c.refuse(text_reply(403, "forbidden: the researcher's key is wrong or missing"));
+    if (request.path != "/api/link") return c;
+    const auto participant = participant_of(request);
+    if (!participant) return c.refuse(bad_participant());
+    c.participant = *participant;
+    return c;
   }
-  return text_reply(404, "not found");
+  return c.refuse(text_reply(404, "not found"));
 }
 
-ApiReply StudyService::state(const ApiRequest& request) {
-  const FormFields query = parse_form_text(request.query);
-  const auto participant = query.get("participant");
-  if (!query.ok() || !participant || !valid_participant_id(*participant)) {
-    return text_reply(400, "bad request: ?participant=ID (1 to 64 of A-Z a-z 0-9 _ -)");
+std::optional<ApiReply> StudyService::screen(const ApiRequest& request) {
+  Checked c = check(request);
+  if (c.refused) return std::move(c.refused);
+  if (!c.answer) return std::nullopt;
+  const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  if (!logs_.take_answer(c.answer->participant, now_s)) {  // never takes the participant's lock
+    return text_reply(429, "too many requests: at most " + std::to_string(static_cast<int>(kAnswersPerSecond)) +
+                               " answers a second");
   }
-  if (!keys_.is_participant_key(*participant, request.field(kApiKeyField))) return text_reply(403, "forbidden: wrong or missing key");
+  return std::nullopt;
+}
+
+ApiReply StudyService::respond(const ApiRequest& request) {
+  Checked c = check(request);
+  if (c.refused) return std::move(*c.refused);
+  if (c.answer) return answer(*c.answer);
+  if (request.path == "/api/state") return state(c.participant);
+  if (request.path == "/api/progress") return progress();
+  if (request.path == "/api/report") return report();
+  return link(c.participant);
+}
+
+ApiReply StudyService::handle(const ApiRequest& request) {
+  if (auto refused = screen(request)) return std::move(*refused);
+  return respond(request);
+}
+
+void StudyService::install(WebServerOptions& options) {
+  options.api = [this](const ApiRequest& request) { return respond(request); };
+  options.api_screen = [this](const ApiRequest& request) { return screen(request); };
+  options.api_post_paths = post_paths();
+  options.api_files_held = [this] { return open_trial_files(); };
+}
+
+ApiReply StudyService::state(const std::string& participant) {
   std::size_t completed = 0;
   bool finished = false;
   std::string error;
-  logs_.with(*participant, [&](ParticipantEntry& entry) {
+  logs_.with(participant, [&](ParticipantEntry& entry) {
     finished = entry.finished || entry.completed() == total_;
     completed = finished ? total_ : entry.completed();
     error = entry.error;
@@ -123,11 +180,11 @@ ApiReply StudyService::state(const ApiRequest& request) {
     say("vimg serve: " + error);
     return text_reply(503, "the participant's trial file cannot be opened; the server's log says why");
   }
-  const auto plan = study::plan_matching_trials(study_, *participant);
+  const auto plan = study::plan_matching_trials(study_, participant);
   JsonWriter w;
   w.begin_object();
   w.key("participant");
-  w.string(*participant);
+  w.string(participant);
   w.key("trials");
   w.integer(static_cast<long long>(total_));
   w.key("completed");
@@ -170,20 +227,7 @@ ApiReply StudyService::state(const ApiRequest& request) {
   return json_reply(200, w.take());
 }
 
-ApiReply StudyService::answer(const ApiRequest& request) {
-  if (request.body.size() > kMaxAnswerBodyBytes) {
-    return text_reply(413, "payload too large: an answer is at most " + std::to_string(kMaxAnswerBodyBytes) + " bytes");
-  }
-  if (!same_origin(request)) return text_reply(403, "forbidden: an answer must come from this server's own page (Origin)");
-  const AnswerParse parsed = parse_answer(parse_form_text(request.body), total_);
-  if (!parsed.answer) return text_reply(400, "bad request: " + parsed.error);
-  const ParsedAnswer& a = *parsed.answer;
-  if (!keys_.is_participant_key(a.participant, request.field(kApiKeyField))) return text_reply(403, "forbidden: wrong or missing key");
-  const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-  if (!logs_.take_answer(a.participant, now_s)) {  // before the participant's lock: nothing waits for a refusal
-    return text_reply(429, "too many requests: at most " + std::to_string(static_cast<int>(kAnswersPerSecond)) +
-                               " answers a second");
-  }
+ApiReply StudyService::answer(const ParsedAnswer& a) {
   ApiReply reply;
   logs_.with(a.participant, [&](ParticipantEntry& entry) {
     if (!entry.error.empty()) {
@@ -262,18 +306,13 @@ ApiReply StudyService::report() const {
   return body_reply(200, "text/html; charset=utf-8", study::report_html(study::make_study_report(inputs, warnings)));
 }
 
-ApiReply StudyService::link(const ApiRequest& request) const {
-  const FormFields query = parse_form_text(request.query);
-  const auto participant = query.get("participant");
-  if (!query.ok() || !participant || !valid_participant_id(*participant)) {
-    return text_reply(400, "bad request: ?participant=ID (1 to 64 of A-Z a-z 0-9 _ -)");
-  }
+ApiReply StudyService::link(const std::string& participant) const {
   JsonWriter w;
   w.begin_object();
   w.key("participant");
-  w.string(*participant);
+  w.string(participant);
   w.key("key");
-  w.string(keys_.participant_key(*participant));
+  w.string(keys_.participant_key(participant));
   w.end_object();
   return json_reply(200, w.take());
 }

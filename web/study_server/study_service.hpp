@@ -19,16 +19,21 @@
 // /api/state, write nothing and make no file. A participant whose trial file exists but cannot be
 // opened (held by vimg-player, say, or broken) gets 503 on the state and the answer. Other methods
 // are 405 (POST only on /api/answer, GET and HEAD elsewhere); any other path under /api/ is 404.
-// Threads: handle() is called from the server's workers at once.
+// Every refusal up to the rate limit's 429 costs no file and no lock: the server makes them on its
+// network thread as the request arrives (screen()), before it waits for anything (a worker, the
+// participant's turn, the participant's answer being synced); the rest is respond()'s, on a worker.
+// Threads: screen() on the network thread, respond() on the server's workers at once.
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "storage/study/study_file.hpp"
 #include "study/trial_plan.hpp"
 #include "web/server/web_server.hpp"
+#include "web/study_server/answer_form.hpp"
 #include "web/study_server/participant_logs.hpp"
 #include "web/study_server/study_keys.hpp"
 
@@ -40,7 +45,15 @@ class StudyService {
   StudyService(MatchingStudy study, std::vector<std::vector<std::string>> image_names, std::filesystem::path results_dir,
                StudyKeys keys, std::function<void(const std::string&)> log_line = {});
 
+  // The refusals that cost no file and no lock, in the order above, the rate limit's 429 last (it
+  // takes one answer from the participant's bucket): a reply, or nothing to go on to respond().
+  std::optional<ApiReply> screen(const ApiRequest& request);
+  // The reply to a request screen() let through (its checks are made again, the rate's aside).
+  ApiReply respond(const ApiRequest& request);
+  // screen() then respond(): the whole API in one call (tests).
   ApiReply handle(const ApiRequest& request);
+  // Serves through `options`: the api, its screen, the POST paths, the files held.
+  void install(WebServerOptions& options);
 
   // The participants' trial files held open (WebServerOptions::api_files_held). Never waits.
   int open_trial_files() const { return logs_.open_logs(); }
@@ -49,11 +62,22 @@ class StudyService {
   static std::vector<std::string> post_paths() { return {"/api/answer"}; }
 
  private:
-  ApiReply state(const ApiRequest& request);
-  ApiReply answer(const ApiRequest& request);
+  // What a request asks once the checks that cost no file and no lock have passed, or its refusal.
+  struct Checked {
+    std::optional<ApiReply> refused;
+    std::optional<ParsedAnswer> answer;  // POST /api/answer
+    std::string participant;             // /api/state, /api/link
+    Checked& refuse(ApiReply reply) {
+      refused = std::move(reply);
+      return *this;
+    }
+  };
+  Checked check(const ApiRequest& request) const;
+  ApiReply state(const std::string& participant);
+  ApiReply answer(const ParsedAnswer& answer);
   ApiReply progress() const;
   ApiReply report() const;
-  ApiReply link(const ApiRequest& request) const;
+  ApiReply link(const std::string& participant) const;
   void say(const std::string& line) const;
 
   MatchingStudy study_;
