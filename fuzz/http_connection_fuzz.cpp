@@ -1,7 +1,8 @@
 // Raw bytes through the real server (web/server/web_server.hpp): Beast's parser, the connection's
 // state machine (web/server/http_connection.hpp: header, refusal, body, 100-continue, the route's
 // queue and the departure watch, the reply, keep-alive, pipelining, event streams, the close) and
-// the routes behind it (the site's files, a stub API), over a real loopback socket. The first byte
+// the routes behind it (the site's files, a stub API), over a real loopback socket (the tests'
+// client, tests/net/raw_http.hpp). The first byte
 // chooses:
 //   'P'  the rest is a URL path for the site-path lookup (web/server/site_path.hpp) alone: a file
 //        found is a regular file inside the site, and no path with a ".." segment finds one;
@@ -10,13 +11,9 @@
 // half-closed is ended: nothing waits on it); what it sends is a sequence of replies, each
 // "HTTP/1.1 NNN" with a status the server can give (never 500: no route here fails); nothing
 // crashes, leaks or trips UBSan. The server's deadlines are shrunk so that an input cannot hold it.
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -25,9 +22,11 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
+#include "tests/net/raw_http.hpp"
 #include "web/server/site_path.hpp"
 #include "web/server/web_server.hpp"
 
@@ -61,6 +60,11 @@ struct Fixture {
       return body_reply(404, "text/plain", "not found");
     };
     options.api_post_paths = {"/api/answer"};
+    // A screen as the study's (refusals on the network thread, before the route waits for anything).
+    options.api_screen = [](const ApiRequest& request) -> std::optional<ApiReply> {
+      if (request.body.size() > 64) return body_reply(429, "text/plain", "too many");
+      return std::nullopt;
+    };
     options.limits.header_deadline = std::chrono::milliseconds(1000);
     options.limits.body_deadline = std::chrono::milliseconds(1000);
     options.limits.closing_deadline = std::chrono::milliseconds(200);
@@ -83,7 +87,7 @@ Fixture& fixture() {
 
 bool known_status(int status) {
   switch (status) {
-    case 100: case 200: case 400: case 403: case 404: case 405: case 413: case 414: case 503: return true;
+    case 100: case 200: case 400: case 403: case 404: case 405: case 413: case 414: case 429: case 503: return true;
     default: return false;
   }
 }
@@ -101,54 +105,26 @@ void check_replies(const std::string& bytes) {
 }
 
 void exchange(int port, std::string_view input) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  if (fd < 0) return;
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(port));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0) {
-    if (errno != EINTR) std::abort();
-    pollfd p{fd, POLLOUT, 0};  // interrupted by libFuzzer's timer signal: the connect goes on
-    while (::poll(&p, 1, -1) < 0 && errno == EINTR) {}
-  }
-  std::size_t sent = 0;
-  while (sent < input.size()) {
-    const ssize_t n = ::send(fd, input.data() + sent, input.size() - sent, MSG_NOSIGNAL);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;  // the server closed first (it refused the request)
-    sent += static_cast<std::size_t>(n);
-  }
-  ::shutdown(fd, SHUT_WR);
-  std::string received;
-  const auto give_up = std::chrono::steady_clock::now() + kCloseBound;
-  for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - std::chrono::steady_clock::now());
-    pollfd p{fd, POLLIN, 0};
-    const int ready = left.count() <= 0 ? 0 : ::poll(&p, 1, static_cast<int>(left.count()));
-    if (ready < 0 && errno == EINTR) continue;  // libFuzzer's timer signal
-    if (ready <= 0) {  // never closed
-      const HttpEngineCounts c = fixture().server->counts();
-      std::fprintf(stderr, "not closed within %lld ms; received %zu bytes; server: %d open, %ld queued, %ld dropped\n",
-                   static_cast<long long>(kCloseBound.count()), received.size(), c.open_connections, c.routes_queued,
-                   c.routes_dropped);
-      std::size_t fds = 0;
-      for ([[maybe_unused]] const auto& entry : fs::directory_iterator("/proc/self/fd")) ++fds;
-      std::fprintf(stderr, "%zu descriptors open; %ld refused busy, %ld closed unanswered\n", fds, c.refused_busy, c.closed_unanswered);
-      std::abort();
-    }
-    char buffer[4096];
-    const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;  // closed (orderly, or reset after a refusal)
-    received.append(buffer, static_cast<std::size_t>(n));
+  vimg::test::RawConnection client(port);
+  if (!client.connected()) std::abort();
+  client.send_all(std::string(input));  // false when the server closed first (it refused the request)
+  ::shutdown(client.fd(), SHUT_WR);
+  client.read_to_end(kCloseBound);
+  if (!client.ended_by_peer()) {  // never closed
+    const HttpEngineCounts c = fixture().server->counts();
+    std::fprintf(stderr, "not closed within %lld ms; received %zu bytes; server: %d open, %ld queued, %ld dropped\n",
+                 static_cast<long long>(kCloseBound.count()), client.received().size(), c.open_connections,
+                 c.routes_queued, c.routes_dropped);
+    std::size_t fds = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator("/proc/self/fd")) ++fds;
+    std::fprintf(stderr, "%zu descriptors open; %ld refused busy, %ld closed unanswered\n", fds, c.refused_busy, c.closed_unanswered);
+    std::abort();
   }
   // Closed with a reset: the server has closed its side already, and a million inputs leave no
   // million ports in TIME_WAIT.
   const linger reset{1, 0};
-  ::setsockopt(fd, SOL_SOCKET, SO_LINGER, &reset, sizeof reset);
-  ::close(fd);
-  check_replies(received);
+  ::setsockopt(client.fd(), SOL_SOCKET, SO_LINGER, &reset, sizeof reset);
+  check_replies(client.received());
 }
 
 void check_lookup(const fs::path& site, std::string_view path) {

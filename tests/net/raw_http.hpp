@@ -3,7 +3,8 @@
 // method) to 127.0.0.1:PORT and reads what comes back: how an attacker or curl --path-as-is talks.
 // Reads block; each wait ends after kHangBound at the latest, which only bounds a hang (a broken
 // server, or an event that never comes while keep-alive comments do), it times nothing.
-// The raw-socket helpers of the server's tests and of bench/study_load (with tests/net/hostile_clients.hpp).
+// The raw-socket helpers of the server's tests, of bench/study_load (with tests/net/hostile_clients.hpp)
+// and of fuzz/http_connection_fuzz.cpp; a signal (libFuzzer's timer) interrupts none of their calls.
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <poll.h>
@@ -30,8 +31,18 @@ inline int connect_loopback(int port, bool non_blocking = false) {
   address.sin_port = htons(static_cast<std::uint16_t>(port));
   address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
   if (::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0) {
-    ::close(fd);
-    return -1;
+    // Interrupted by a signal, the connect goes on: its outcome is known once the socket is writable.
+    int error = errno;
+    if (error == EINTR) {
+      pollfd p{fd, POLLOUT, 0};
+      while (::poll(&p, 1, -1) < 0 && errno == EINTR) {}
+      socklen_t length = sizeof error;
+      if (::getsockopt(fd, SOL_SOCKET, SO_ERROR, &error, &length) != 0) error = errno;
+    }
+    if (error != 0) {
+      ::close(fd);
+      return -1;
+    }
   }
   if (non_blocking) ::fcntl(fd, F_SETFL, O_NONBLOCK);
   return fd;
@@ -70,6 +81,7 @@ class RawConnection {
     std::size_t sent = 0;
     while (sent < bytes.size()) {
       const ssize_t n = ::send(fd_, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
+      if (n < 0 && errno == EINTR) continue;
       if (n <= 0) return false;
       sent += static_cast<std::size_t>(n);
     }
@@ -105,20 +117,26 @@ class RawConnection {
     while (read_some(give_up)) {}
     return closed_by_peer_;
   }
+  // The peer has ended the connection, in order or with a reset (not: the bound ended the wait).
+  bool ended_by_peer() const { return closed_by_peer_ || reset_by_peer_; }
   const std::string& received() const { return received_; }
 
  private:
   // False at the end of the stream, on an error, or at `give_up`.
   bool read_some(std::chrono::steady_clock::time_point give_up) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return false;
     pollfd p{fd_, POLLIN, 0};
-    if (left.count() <= 0 || poll(&p, 1, static_cast<int>(left.count())) <= 0) return false;
+    const int ready = poll(&p, 1, static_cast<int>(left.count()));
+    if (ready < 0 && errno == EINTR) return read_some(give_up);
+    if (ready <= 0) return false;
     char buffer[4096];
     ssize_t n = 0;
     do {
       n = ::recv(fd_, buffer, sizeof buffer, 0);
     } while (n < 0 && errno == EINTR);
     if (n == 0) closed_by_peer_ = true;
+    if (n < 0) reset_by_peer_ = true;
     if (n <= 0) return false;
     received_.append(buffer, static_cast<std::size_t>(n));
     return true;
@@ -127,6 +145,7 @@ class RawConnection {
   int fd_ = -1;
   bool connected_ = false;
   bool closed_by_peer_ = false;  // recv() returned 0: the orderly end of the stream
+  bool reset_by_peer_ = false;   // recv() failed (a reset)
   std::string received_;
 };
 
