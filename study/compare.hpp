@@ -80,8 +80,8 @@ struct CompareResult {
   DiscriminationConstants discrimination;            // as requested
   // stsim[i][j]: ST-SIM of input i against reference j over their common length, exactly as the
   // reference implementation (vibromaf) computes it (stsim_matrix): a codec-distortion metric,
-  // reported beside the prediction, not part of it. Unbounded (against a reference that is only a
-  // decayed ring it runs to 1e4 and more); NaN: no value.
+  // reported beside the prediction, not part of it. Up to 7.6e8 against a reference that is, in
+  // some block, only a decayed ring (docs/stsim.md, "Values far above 1"); NaN: no value.
   PerceptionMatrix stsim;
   std::vector<DiscriminationFeatures> features;      // of every input, in order
   CueMatrix cues;                                    // cue_matrix(features): [presented][chosen], JNDs

@@ -13,8 +13,10 @@
 //   ST-SIM = temporal^eta * spectral^(1 - eta), eta = 2/3; signals equal sample for sample give 1
 //   (checked before anything else, as the reference does); a negative temporal term gives 0
 //   (where the reference's Python would return a complex number).
-// Either term may exceed 1 a little (the reference normalises by the reference block only); the
-// value is reported as computed, as the reference does.
+// Either term, and ST-SIM, may exceed 1 (each block is divided by the reference block's energy
+// alone, plus an absolute eps): a little where the distorted block is louder, by up to
+// sqrt(512 / eps) / 2 = 7.6e8 where the reference block is only a ring decayed far below threshold
+// (docs/stsim.md, "Values far above 1"); the value is reported as computed, as the reference does.
 //
 // Analyse each signal once (analyse_stsim), then compare features as often as needed (stsim);
 // comparing two analysed 20 s signals costs about two passes over their features.
