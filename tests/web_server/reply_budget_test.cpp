@@ -130,6 +130,31 @@ TEST_F(ReplyBudget, ARequestWaitsForRoomNoLongerThanTheBudgetWait) {
   EXPECT_EQ(server.reply_bytes_held(), kFileBytes);
 }
 
+// stop() (SIGINT, SIGTERM) answers a request waiting for room at once: its 503, then the close,
+// well before the stop's grace deadline. Seen to fail (no reply: the connection was closed at the
+// grace deadline, shrunk here to 2 s) with Session::stop_gracefully leaving a waiting request be,
+// as a route under way.
+TEST_F(ReplyBudget, StopAnswersARequestWaitingForRoom) {
+  sparse_file(site_ / "a.bin", kFileBytes);
+  sparse_file(site_ / "b.bin", kFileBytes);
+  WebServer& server = start_server([](WebServerOptions& options) {
+    options.limits.reply_budget_bytes = kBudgetBytes;
+    options.limits.reply_budget_wait = kHangBound;
+    options.limits.stop_grace_deadline = std::chrono::milliseconds(2000);
+  });
+  RawConnection slow(port());
+  ASSERT_TRUE(slow.send_all("GET /a.bin HTTP/1.1\r\nHost: localhost\r\n\r\n"));
+  ASSERT_TRUE(slow.read_until("\r\n\r\n"));
+  RawConnection waiting(port());
+  ASSERT_TRUE(waiting.send_all("GET /b.bin HTTP/1.1\r\nHost: localhost\r\n\r\n"));
+  ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == 1; }));
+  server.stop();
+  ASSERT_TRUE(waiting.read_to_end()) << waiting.received();
+  HttpResponse reply = parse_response(waiting.received());
+  EXPECT_EQ(reply.status, 503);
+  EXPECT_EQ(reply.headers["connection"], "close");
+}
+
 // HEAD of a file reads none of it: no copy, nothing held. Seen to fail (the budget held the file
 // during the reply, and a HEAD of b.bin beside a slow reader of a.bin got 503) with serve_file
 // making a copy for HEAD too.

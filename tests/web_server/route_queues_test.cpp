@@ -99,7 +99,8 @@ TEST_F(RouteQueues, OneClientsRequestsHoldOneWorker) {
 }
 
 // A client that closes while its request waits for a worker is dropped, and its route never runs.
-// Seen to fail (the count was 2) with the departed_ check removed from Session::dispatch.
+// Seen to fail (the count was 2) with the departed_ check removed from the route's job (then in
+// Session::dispatch, now Session::queue_route).
 TEST_F(RouteQueues, TheRouteOfAClientThatHasGoneIsNotRun) {
   StubApi api(root_ / "answers.txt");
   WebServer& server = start_server([&](WebServerOptions& options) { api.install(options); });
