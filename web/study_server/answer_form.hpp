@@ -1,5 +1,5 @@
 #pragma once
-// A page's answer, as the server reads it before anything is written (docs/studies.md, "In the
+// A page's answer, as the server reads it before anything is written (docs/matching-test.md, "The matching test in the
 // browser"). The body is form text (web/study_server/form_text.hpp) with exactly these fields:
 //   participant, trial (1..N), presented, chosen (image stems of the trial's set), rub_s,
 //   response_s, path_mm (decimal numbers, docs/format.md "Trial files")

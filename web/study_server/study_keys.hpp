@@ -1,5 +1,5 @@
 #pragma once
-// The keys of a study run in the browser (docs/studies.md, "In the browser"). A secret of 256
+// The keys of a study run in the browser (docs/matching-test.md, "The matching test in the browser"). A secret of 256
 // random bits lives in the results folder (storage/study/study_secret_file.hpp), made the first
 // time `vimg serve --study` or `vimg study link` needs it. Every key is derived from it, so links
 // stay valid across restarts and nothing else is stored:
