@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "primitives/perception/channel_levels.hpp"
@@ -170,16 +171,32 @@ DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8kh
   // A dip: how far the fast envelope falls below the smaller of its largest values in the
   // kDipContextMs before and after (signal on both sides: a gap, not an onset or an end).
   const auto context = static_cast<std::size_t>(kDipContextMs / kEnvelopeStepMs);
-  std::vector<float> slow_db(steps), dips_db(steps);
+  // A rhythm's gap: the same against the means over kRhythmContextMs before and after (silence
+  // beyond the signal's ends): a gap between bursts too long for kDipContextMs and too short for the
+  // slow envelope; means, so that a brief click beside it counts as little as it is felt.
+  const auto rhythm_context = static_cast<std::size_t>(kRhythmContextMs / kEnvelopeStepMs);
+  std::vector<double> running(steps + 1, 0.0);  // running[k]: the sum of fast[0..k)
+  for (std::size_t s = 0; s < steps; ++s) running[s + 1] = running[s] + fast[s];
+  const auto rhythm_mean = [&](std::size_t first, std::size_t end) {  // over [first, end) within the signal
+    end = std::min(end, steps);
+    return first < end ? std::max(0.0, running[end] - running[first]) / static_cast<double>(rhythm_context + 1) : 0.0;
+  };
+  std::vector<float> slow_db(steps), dips_db(steps), gaps_db(steps), silence_db(steps);
   for (std::size_t s = 0; s < steps; ++s) {
     double before = 0.0, after = 0.0;
     for (std::size_t k = s > context ? s - context : 0; k <= s; ++k) before = std::max(before, fast[k]);
     for (std::size_t k = s; k < steps && k <= s + context; ++k) after = std::max(after, fast[k]);
     slow_db[s] = static_cast<float>(relative(slow[s]));
     dips_db[s] = static_cast<float>(std::min(0.0, relative(fast[s]) - relative(std::min(before, after))));
+    const double around = relative(std::min(rhythm_mean(s > rhythm_context ? s - rhythm_context : 0, s + 1),
+                                            rhythm_mean(s, s + rhythm_context + 1)));
+    gaps_db[s] = static_cast<float>(std::min(0.0, relative(fast[s]) - around));
+    silence_db[s] = static_cast<float>(std::min(0.0, -f.moment_level_db - around));
   }
   f.slow_envelope = envelope_track(std::move(slow_db), static_cast<float>(-f.moment_level_db));
   f.dips = envelope_track(std::move(dips_db), 0.0f);
+  f.rhythm = envelope_track(std::move(gaps_db), 0.0f);
+  f.rhythm.silence_db = std::move(silence_db);
 
   // Pitch: the excitation-weighted mean of log2 f over the frame-averaged spectrum.
   if (f.level_db > 0.0) {
@@ -214,6 +231,9 @@ double track_distance_db(const DiscriminationFeatures& a, const DiscriminationFe
     const auto felt = [](const DiscriminationFeatures& z, std::size_t s) {
       return z.moment_level_db + (s < z.slow_envelope.db.size() ? static_cast<double>(z.slow_envelope.high_db[s]) : -z.moment_level_db);
     };
+    const auto silence_at = [](const EnvelopeTrack& t, std::size_t s) {
+      return s < t.silence_db.size() ? static_cast<double>(t.silence_db[s]) : -std::numeric_limits<double>::infinity();
+    };
     double worst = 0.0;
     for (std::size_t s = 0; s < steps; ++s) {
       const double v = s < tx.db.size() ? static_cast<double>(tx.db[s]) : tx.silent_db;
@@ -227,8 +247,10 @@ double track_distance_db(const DiscriminationFeatures& a, const DiscriminationFe
         low = std::min(low, static_cast<double>(ty.silent_db));
         high = std::max(high, static_cast<double>(ty.silent_db));
       }
+      // Rhythm: gaps down to silence in both are alike (the shallower of the two silences).
+      const double floor = std::max(silence_at(tx, s), silence_at(ty, s));
       const double salience = std::clamp(std::max(felt(x, s), felt(y, s)) / kFullSalienceLevelDb, 0.0, 1.0);
-      worst = std::max(worst, outside(v, low, high) * salience);
+      worst = std::max(worst, outside(std::max(v, floor), std::max(low, floor), std::max(high, floor)) * salience);
     }
     return worst;
   };
@@ -247,7 +269,8 @@ CueDistances cue_distances(const DiscriminationFeatures& a, const Discrimination
         std::abs(a.pitch_octaves - b.pitch_octaves) / pitch_jnd_octaves * std::min(1.0, felt / kFullSalienceLevelDb);
   }
   d[static_cast<std::size_t>(Cue::envelope)] =
-      std::max(track_distance_db(a, b, &DiscriminationFeatures::slow_envelope), track_distance_db(a, b, &DiscriminationFeatures::dips)) /
+      std::max({track_distance_db(a, b, &DiscriminationFeatures::slow_envelope), track_distance_db(a, b, &DiscriminationFeatures::dips),
+                track_distance_db(a, b, &DiscriminationFeatures::rhythm)}) /
       kLevelJndDb;
   return d;
 }

@@ -29,15 +29,20 @@
 //              increments sum over time, as the Pacinian channel's threshold does), in dB relative
 //              to the slow envelope's largest value, floored at -level_db (below threshold nothing is
 //              felt, so a gap in a faint vibration is shallower than in a strong one). Kept: the slow
-//              envelope (rhythm, level over time) and the dips: how far the fast
+//              envelope (level over time) and the dips: how far the fast
 //              envelope falls below the smaller of its largest values within kDipContextMs before
-//              and after (a gap has signal on both sides; an onset or an end does not);
+//              and after (a gap has signal on both sides; an onset or an end does not); and the
+//              rhythm: the same against the smaller of its means over kRhythmContextMs before and
+//              after (the silences between bursts, too long for the dips' context and smoothed away
+//              by the slow envelope; a mean, so that a brief click beside a silence counts little);
+//              where the signal falls silent, the depth it would have there is kept with it;
 //
 // Cue distances between two signals a and b, each >= 0, in JNDs, symmetric, 0 for identical:
 //   level:    |level_a - level_b| / kLevelJndDb;
 //   pitch:    |pitch_a - pitch_b| / log2(1 + kFrequencyWeberFraction), scaled by
 //             min(1, min(level_a, level_b) / kFullSalienceLevelDb): pitch needs both to be felt;
-//   envelope: the largest difference, in dB, of the two slow envelopes or of the two dip tracks,
+//   envelope: the largest difference, in dB, of the two slow envelopes, dip or rhythm tracks
+//             (rhythm: silences in both are alike, however loud around them),
 //             each moment against the other's range within +-kTimingToleranceMs (free exploration
 //             does not repeat its timing exactly), scaled by min(1, felt level there /
 //             kFullSalienceLevelDb) (the stronger of the two), / kLevelJndDb: a gap, a rhythm.
@@ -64,6 +69,9 @@ inline constexpr double kFullSalienceLevelDb = 10.0;
 inline constexpr double kEnvelopeWindowMs = 40.0;  // the fast envelope's window (Hann, full width): gaps
 inline constexpr double kSlowEnvelopeWindowMs = 400.0;  // the slow envelope's (Hann): summation of increments
 inline constexpr double kDipContextMs = 50.0;  // a dip is measured against the envelope this far on both sides
+// A rhythm's gap is measured against the means this far on both sides: the slow envelope's
+// half-width, so that gaps it smooths away are seen (not a constant of its own).
+inline constexpr double kRhythmContextMs = kSlowEnvelopeWindowMs / 2.0;
 inline constexpr double kTimingToleranceMs = 20.0;  // timing shifts that go unnoticed
 inline constexpr double kLowestFeltHz = 10.0;  // below: drift of the acceleration signal, not counted
 inline constexpr std::size_t kSpectrumFrameSamples = 4096;
@@ -75,6 +83,10 @@ struct EnvelopeTrack {
   std::vector<float> low_db;   // the least of db within +-kTimingToleranceMs of each step
   std::vector<float> high_db;  // the largest
   float silent_db = 0.0f;      // its value in silence (before and after the signal)
+  // Rhythm only: the depth its gap would have if the signal fell silent there (-(felt level of
+  // what surrounds it)): two gaps down to silence are alike however loud their surroundings, which
+  // the level cue tells apart. Empty for the other tracks.
+  std::vector<float> silence_db;
 };
 
 struct DiscriminationFeatures {
@@ -85,6 +97,7 @@ struct DiscriminationFeatures {
   double pitch_octaves = 0.0;            // log2 of the centroid frequency in Hz (0 when nothing is felt)
   EnvelopeTrack slow_envelope;           // dB re its strongest moment, >= -level_db (silence)
   EnvelopeTrack dips;                    // dB <= 0: how far the fast envelope falls below its surroundings
+  EnvelopeTrack rhythm;                  // dB <= 0: the same against the means over kRhythmContextMs
 };
 
 DiscriminationFeatures analyse_discrimination(std::span<const double> signal_8khz,

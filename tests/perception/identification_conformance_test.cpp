@@ -7,9 +7,10 @@
 //   [calibration]    kContextNoisePerDPrime was set on Rabinowitz et al.'s ranges (one-dimensional
 //                    sets 1-2 bits, three-dimensional 4-5), so those checks test the rendered path
 //                    (threshold, summation, cues), not a prediction;
-//   [out of sample]  nothing was set on Azadi & Jones's nine tactons.
-// The stimuli's values are ours: the sources' abstracts give the dimensions, not the values
-// (docs/perception.md, "Identification of rendered sets").
+//   [out of sample]  nothing was set on Azadi & Jones's nine tactons, nor on the segregation of
+//                    rhythms (Jurado et al. 2021).
+// The stimuli's values are ours: the sources' abstracts give the dimensions, not the values, and
+// their full texts were not found (docs/perception.md, "Identification of rendered sets").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -140,34 +141,56 @@ TEST(IdentificationConformance, OneDimensionalSetsOfLevelTransferOneToTwoBits) {
 
 // Rabinowitz et al.'s three dimensions were intensity, frequency and contactor area; the model has
 // no spatial cue, so the third dimension here is rhythm (1 to 5 bursts in 1 s). The model falls
-// short of the published 4-5 bits: rhythms of 3 or more bursts a second are nearly the steady tone
-// to it (next test), so the third dimension adds about one bit where people's added two or more.
-// Pinned as a deviation (docs/perception.md): this fails when the model reaches the published
-// range, so that the docs are redone.
+// short of the published 4-5 bits, and not for the rhythm: five rhythms alone are identified
+// without error (2.32 bits, log2 5; next test: each 12 JNDs or more from the others), while
+// frequency and level together transfer only about 2.2 bits, where people's one-dimensional 1-2
+// bits each add to more. Pinned as a deviation (docs/perception.md): this fails when the model
+// reaches the published range, so that the docs are redone.
 TEST(IdentificationConformance, AThreeDimensionalSetFallsShortOfThePublishedFourToFiveBits) {
-  std::vector<Stimulus> set;
-  for (const double f : spread(40.0, 250.0, 5, true))
-    for (const double sl : spread(10.0, 50.0, 5, false))
+  const std::vector<double> frequencies = spread(40.0, 250.0, 5, true);
+  const std::vector<double> levels = spread(10.0, 50.0, 5, false);
+  std::vector<Stimulus> set, rhythms, frequency_by_level;
+  for (const double f : frequencies)
+    for (const double sl : levels) {
+      frequency_by_level.push_back({f, sl, 1});
       for (const int pulses : {1, 2, 3, 4, 5}) set.push_back({f, sl, pulses});
+    }
+  for (const int pulses : {1, 2, 3, 4, 5}) rhythms.push_back({250.0, 30.0, pulses});
   const double it = it_bits(identify(set));
+  const double rhythm_it = it_bits(identify(rhythms));
+  const double two_it = it_bits(identify(frequency_by_level));
   const test::PublishedRange range = published("identification_information_transfer_bits_three_dimensions");
   report("3 dimensions: bits", set.size(), it, range);
+  std::printf("three dimensions: rhythm alone %.2f bits, frequency x level %.2f bits\n", rhythm_it, two_it);
   EXPECT_LT(it, range.low) << kCalibration << "(pinned deviation) " << it << " bits: now within or above the published "
                            << range.low << "-" << range.high << ": redo docs/perception.md";
-  EXPECT_GT(it, 2.5) << kCalibration << "(pinned deviation) " << it << " bits";
+  EXPECT_GT(it, 3.4) << kCalibration << "(pinned deviation) " << it << " bits";
+  EXPECT_GT(rhythm_it, std::log2(5.0) - 0.05) << "(pinned) five rhythms alone: " << rhythm_it << " bits";
+  EXPECT_LT(two_it, 2.5) << "(pinned) frequency x level, 25 members: " << two_it << " bits: redo docs/perception.md";
 }
 
-// Why: the envelope cue sees a gap through its dips only when the gap has signal within
-// kDipContextMs (50 ms) on both sides, and its slow envelope (400 ms) smooths bursts of 200 ms or
-// less into a ripple. So 2 bursts in 1 s (333 ms each) are far from the steady tone, 4 bursts
-// (143 ms and 143 ms gaps) barely apart. No published figure: a pinned property of the model.
-TEST(IdentificationConformance, RhythmsOfFourBurstsASecondAreBarelyApartFromTheSteadyTone) {
+// Successive vibrotactile stimuli separated by at least about 80-90 ms are felt apart (Jurado et al.
+// 2021, the critical segregation rate of about 11-12 Hz), so rhythms whose silences are longer are
+// plainly different rhythms: 2 to 5 bursts in 1 s (silences of 333 to 111 ms) against the steady tone
+// and one another, confused in at most 5 % of two-interval trials. Out of sample: nothing was set on
+// it (the rhythm track's context is half the slow envelope's window, kRhythmContextMs).
+TEST(IdentificationConformance, RhythmsSlowerThanThePublishedSegregationRateAreToldApart) {
+  const test::PublishedRange segregation = published("temporal_segregation_interval_ms");
   std::vector<DiscriminationFeatures> f;
-  for (const int pulses : {1, 2, 4}) f.push_back(analyse_discrimination(render_pulses(Tone{250.0, 30.0}, pulses), strong_actuator()));
+  for (const int pulses : {1, 2, 3, 4, 5}) {
+    if (pulses > 1) {
+      EXPECT_GT(1000.0 / (2 * pulses - 1), segregation.high) << pulses << " bursts: silences within the published limit";
+    }
+    f.push_back(analyse_discrimination(render_pulses(Tone{250.0, 30.0}, pulses), strong_actuator()));
+  }
   const CueMatrix d = cue_matrix(f);
-  std::printf("rhythm: envelope JNDs from the steady tone: 2 bursts %.1f, 4 bursts %.1f\n", d[0][1][2], d[0][2][2]);
-  EXPECT_GT(d[0][1][2], 10.0) << "(pinned) 2 bursts against steady";
-  EXPECT_LT(d[0][2][2], 2.0) << "(pinned) 4 bursts against steady: now a cue, redo docs/perception.md";
+  std::printf("rhythm: envelope JNDs from the steady tone: 2 bursts %.1f, 3 bursts %.1f, 4 bursts %.1f, 5 bursts %.1f\n", d[0][1][2],
+              d[0][2][2], d[0][3][2], d[0][4][2]);
+  for (std::size_t i = 0; i < f.size(); ++i)
+    for (std::size_t j = i + 1; j < f.size(); ++j) {
+      const double p = two_alternative_confusion(combined_distance_jnd(d[i][j]));
+      EXPECT_LE(p, 0.05) << kOutOfSample << i + 1 << " against " << j + 1 << " bursts: confused " << p;
+    }
 }
 
 // Azadi & Jones (2014): nine tactons over frequency, amplitude and temporal profile, each
@@ -206,9 +229,10 @@ double sampled_it_bits(const PerceptionMatrix& p, int presentations) {
 }
 
 // The model identifies our nine tactons better than Azadi & Jones's participants identified
-// theirs: pinned as a deviation (docs/perception.md). Their values are not in the abstract; ours
-// are 4 frequency JNDs and 5 level JNDs apart with two of three rhythms far apart, where the model
-// sees little context noise (few values per cue) and adds the cues as independent.
+// theirs: pinned as a deviation (docs/perception.md). Their values are not in the abstract (nor in
+// any text found); ours are 4 frequency JNDs and 5 level JNDs apart with three rhythms each 12 JNDs
+// or more apart, where the model sees little context noise (few values per cue) and adds the cues
+// as independent.
 TEST(IdentificationConformance, NineTactonsOverThreeDimensionsAreIdentifiedBetterThanPublished) {
   const PerceptionMatrix p = identify(nine_tactons());
   const double correct = percent_correct(p);
@@ -222,7 +246,7 @@ TEST(IdentificationConformance, NineTactonsOverThreeDimensionsAreIdentifiedBette
   EXPECT_GT(correct, pc.high) << kOutOfSample << "(pinned deviation) " << correct << " % correct: now within " << pc.low << "-"
                               << pc.high << ", redo docs/perception.md";
   EXPECT_GT(sampled, bits.high) << kOutOfSample << "(pinned deviation) " << sampled << " bits estimated from 72 trials";
-  EXPECT_LT(correct, 99.0) << kOutOfSample << "(pinned deviation) " << correct << " % correct";
+  EXPECT_LT(correct, 99.5) << kOutOfSample << "(pinned deviation) " << correct << " % correct";
 }
 
 }  // namespace
