@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "primitives/perception/identification_choice.hpp"
@@ -102,6 +103,25 @@ TEST(Identification, InformationAlongOneCueSaturatesAndIndependentCuesAdd) {
   const double it3 = information_transfer_bits(identification_confusion(cues_of(cube)));
   EXPECT_GE(it3, 4.0);
   EXPECT_LE(it3, 5.0);
+}
+
+// Luce's rule over the Euclidean d' is not additive over independent cues, where the
+// nearest-choice observer it approximates is (with independent noise its matrix over a grid is the
+// product of the one-dimensional ones, and information adds): five values on each of two cues,
+// 2 JNDs apart (the spacing of the rendered frequency sets), transfer about 0.3 bits less than
+// twice one cue's five. Pinned: a property of the approximation, one cause of the rendered
+// three-dimensional set's shortfall (docs/perception.md, "Identification of rendered sets").
+TEST(Identification, LucesRuleOverAGridTransfersLessThanItsCuesAdd) {
+  std::vector<CueDistances> line, grid;
+  for (int a = 0; a < 5; ++a) {
+    line.push_back({2.0 * a, 0.0, 0.0});
+    for (int b = 0; b < 5; ++b) grid.push_back({2.0 * a, 2.0 * b, 0.0});
+  }
+  const double one = information_transfer_bits(identification_confusion(cues_of(line)));
+  const double two = information_transfer_bits(identification_confusion(cues_of(grid)));
+  std::printf("Luce over a 5 x 5 grid 2 JNDs apart: %.2f bits, one cue %.2f (twice: %.2f)\n", two, one, 2.0 * one);
+  EXPECT_GT(2.0 * one - two, 0.2) << "(pinned) now nearly additive: redo docs/perception.md";
+  EXPECT_LT(2.0 * one - two, 0.5) << "(pinned)";
 }
 
 TEST(InformationTransfer, MatchesTheEntropyFormAndItsBounds) {

@@ -143,9 +143,10 @@ TEST(IdentificationConformance, OneDimensionalSetsOfLevelTransferOneToTwoBits) {
 // no spatial cue, so the third dimension here is rhythm (1 to 5 bursts in 1 s). The model falls
 // short of the published 4-5 bits, and not for the rhythm: five rhythms alone are identified
 // without error (2.32 bits, log2 5; next test: each 12 JNDs or more from the others), while
-// frequency and level together transfer only about 2.2 bits, where people's one-dimensional 1-2
-// bits each add to more. Pinned as a deviation (docs/perception.md): this fails when the model
-// reaches the published range, so that the docs are redone.
+// frequency and level together transfer only about 2.2 bits, less than their one-dimensional sets
+// add to: Luce's rule is not additive over cues (Identification.LucesRuleOverAGridTransfersLess-
+// ThanItsCuesAdd). Pinned as a deviation (docs/perception.md): this fails when the model reaches
+// the published range, so that the docs are redone.
 TEST(IdentificationConformance, AThreeDimensionalSetFallsShortOfThePublishedFourToFiveBits) {
   const std::vector<double> frequencies = spread(40.0, 250.0, 5, true);
   const std::vector<double> levels = spread(10.0, 50.0, 5, false);
