@@ -178,5 +178,27 @@ TEST_F(RouteQueues, StopFinishesAndSyncsAnAnswerInFlight) {
   EXPECT_EQ(row, "trial=1");
 }
 
+// stop() with an answer whose sync does not end: its connection is closed, unanswered, at the
+// stop's grace deadline (shrunk to 300 ms), while stop() still waits for the route, which writes
+// its row once the disk goes on. Seen to fail (still open after 60 s) with begin_stop's grace
+// timer not armed.
+TEST_F(RouteQueues, StopClosesWhatIsLeftAtTheGraceDeadline) {
+  StubApi api(root_ / "answers.txt");
+  WebServer& server = start_server([&](WebServerOptions& options) {
+    api.install(options);
+    options.limits.stop_grace_deadline = std::chrono::milliseconds(300);
+  });
+  RawConnection answer(port());
+  ASSERT_TRUE(answer.send_all(post_request("/api/answer", "trial=1")));
+  ASSERT_TRUE(api.disk.wait_for_waiters(1));  // the answer is being synced, and stays so
+  auto stopped = std::async(std::launch::async, [&] { server.stop(); });
+  EXPECT_TRUE(answer.read_to_end()) << "still open after the grace deadline";
+  EXPECT_EQ(parse_response(answer.received()).status, 0) << "a reply, though its route has not ended";
+  EXPECT_EQ(stopped.wait_for(std::chrono::seconds(0)), std::future_status::timeout) << "stop() did not wait for the route";
+  api.disk.open();
+  stopped.get();
+  EXPECT_EQ(api.answers_synced, 1);
+}
+
 }  // namespace
 }  // namespace vimg::test
