@@ -155,6 +155,22 @@ TEST_F(ReplyBudget, StopAnswersARequestWaitingForRoom) {
   EXPECT_EQ(reply.headers["connection"], "close");
 }
 
+// A file larger than the whole budget could never find room: 503 at once, without a wait (the
+// wait here is an hour). Seen to fail (no reply within the client's 60 s) with serve_file setting
+// wait_for_room whatever the file's size.
+TEST_F(ReplyBudget, AFileLargerThanTheWholeBudgetIs503AtOnce) {
+  sparse_file(site_ / "a.bin", kFileBytes);
+  WebServer& server = start_server([](WebServerOptions& options) {
+    options.limits.reply_budget_bytes = kFileBytes - 1;
+    options.limits.reply_budget_wait = std::chrono::hours(1);
+  });
+  HttpResponse refused = exchange(port(), "GET", "/a.bin");
+  EXPECT_EQ(refused.status, 503);
+  EXPECT_EQ(refused.headers["retry-after"], "1");
+  EXPECT_EQ(server.counts().room_waits_expired, 0) << "it waited";
+  EXPECT_EQ(server.reply_bytes_held(), 0u);
+}
+
 // HEAD of a file reads none of it: no copy, nothing held. Seen to fail (the budget held the file
 // during the reply, and a HEAD of b.bin beside a slow reader of a.bin got 503) with serve_file
 // making a copy for HEAD too.
