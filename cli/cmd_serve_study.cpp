@@ -1,7 +1,8 @@
-// `vimg serve --study STUDY.xml --results DIR [--port N] [--lan] [--tls CERT KEY]` (docs/studies.md,
-// "In the browser"): the study's images built into a private temporary site with the study's
-// pages, served with the study API (web/study_server/study_service.hpp). It prints the
-// researcher's dashboard URL; `vimg study link DIR --participant ID` prints participants' links.
+// `vimg serve --study STUDY.xml --results DIR [--port N] [--lan] [--tls CERT KEY]`
+// (docs/matching-test.md, "The matching test in the browser"): the study's images built into a
+// private temporary site with the study's pages, served with the study API
+// (web/study_server/study_service.hpp). It prints the researcher's dashboard URL; `vimg study
+// link DIR --participant ID` prints participants' links.
 #include <cstdio>
 #include <set>
 #include <variant>

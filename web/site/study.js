@@ -1,5 +1,5 @@
 'use strict';
-// The study page (docs/studies.md, "The matching test in the browser"): the matching test of
+// The study page (docs/matching-test.md, "The matching test in the browser"): the matching test of
 // vimg-player --study on any device. The procedure is the C++ StudyFlow (study/study_flow.hpp)
 // in vimg.wasm; this file shows its screens, moves pointer events and samples, and sends each
 // answer to the server, keeping it in localStorage until the server confirms it. The link is
