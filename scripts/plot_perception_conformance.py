@@ -19,6 +19,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+def label(ax, xlabel, ylabel, title, ylim=None, **legend):
+    """A panel's axes, title and legend."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    if ylim is not None:
+        ax.set_ylim(*ylim)
+    ax.set_title(title)
+    ax.legend(fontsize=6, **legend)
+
+
 def read_model(path):
     rows, identification = {}, []
     with open(path, encoding="utf-8") as f:
@@ -66,10 +76,7 @@ def jnd_panel(ax, published, model, quantity, ylabel, title, colours):
         ax.plot([p[0] for p in pts], [p[1] for p in pts], marker=marker, markersize=size, markerfacecolor="none",
                 color="black", label=f"model, {sl:g} dB SL")
     ax.set_xscale("log")
-    ax.set_xlabel("frequency (Hz)")
-    ax.set_ylabel(ylabel)
-    ax.set_title(title)
-    ax.legend(fontsize=6)
+    label(ax, "frequency (Hz)", ylabel, title)
 
 
 def main():
@@ -90,11 +97,7 @@ def main():
                         color=colours[0], label=row["source"].split(":")[0].split(",")[0] + " et al.")
     pts = sorted((r[1], r[2]) for r in model.get("gap_detection_ms", []))
     ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="o", color="black", label="model, 250 Hz tone")
-    ax.set_xlabel("sensation level (dB)")
-    ax.set_ylabel("gap detection threshold (ms)")
-    ax.set_ylim(0, 15)
-    ax.set_title("Gap detection")
-    ax.legend(fontsize=6)
+    label(ax, "sensation level (dB)", "gap detection threshold (ms)", "Gap detection", (0, 15))
 
     ax = axes[1][0]
     pts = sorted((r[0], r[2], r[3], r[4]) for r in model.get("threshold_peak_displacement_um", []))
@@ -104,10 +107,7 @@ def main():
             label="model: min(Pacinian U, non-Pacinian floor)")
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("frequency (Hz)")
-    ax.set_ylabel("detection threshold, peak displacement (µm)")
-    ax.set_title("Detection threshold")
-    ax.legend(fontsize=6, loc="lower left")
+    label(ax, "frequency (Hz)", "detection threshold, peak displacement (µm)", "Detection threshold", loc="lower left")
 
     ax = axes[1][1]
     one = [r for r in identification if r[0].startswith(("frequency", "level"))]
@@ -117,11 +117,7 @@ def main():
         pts = sorted((r[1], r[2]) for r in one if r[0] == name)
         ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="os^vD"[n % 5], color="black", alpha=0.4 + 0.12 * n,
                 label=f"model: {name}")
-    ax.set_xlabel("members of the set")
-    ax.set_ylabel("information transfer (bits)")
-    ax.set_ylim(0, 2.5)
-    ax.set_title("Identification along one dimension (rendered sets)")
-    ax.legend(fontsize=6)
+    label(ax, "members of the set", "information transfer (bits)", "Identification along one dimension (rendered sets)", (0, 2.5))
 
     ax = axes[1][2]
     many = [r for r in identification if not r[0].startswith(("frequency", "level"))]
