@@ -105,10 +105,10 @@ def lag_displacements(history):
     return d
 
 
-def samples(directory):
+def samples(directory, participants=PARTICIPANTS):
     features, targets = [], []
     for _, prefix in TASKS:
-        for participant in PARTICIPANTS:
+        for participant in participants:
             rows = load(directory, prefix, participant)
             table = np.array(rows)
             for stroke in strokes(rows):
@@ -132,7 +132,7 @@ def samples(directory):
     return np.array(features), np.array(targets)
 
 
-def fit(features, targets):
+def fit(features, targets, ridge=RIDGE):
     lags = np.arange(1, K + 1) * LAG_S
     free, exact = [], []
     for j in range(NH):
@@ -140,7 +140,7 @@ def fit(features, targets):
         a = np.vstack([features[used, 0, :], features[used, 1, :]])
         b = np.concatenate([targets[used, 0, j], targets[used, 1, j]])
         gram, rhs = a.T @ a, a.T @ b
-        gram = gram + RIDGE * np.trace(gram) / K * np.eye(K)
+        gram = gram + ridge * np.trace(gram) / K * np.eye(K)
         free.append(np.linalg.solve(gram, rhs))
         kkt = np.zeros((K + 1, K + 1))
         kkt[:K, :K] = 2.0 * gram

@@ -31,7 +31,7 @@
 //   learned: the default; a small fixed-weight network on the recent steps in the stroke's frame
 //            (learned_predictor.hpp).
 //
-// Bounds (tests/touch_prediction/, docs/latency.md "What the tests hold it to"):
+// Bounds (tests/touch_prediction/, docs/touch-prediction.md "What the tests hold it to"):
 //   - a still finger (all d_k = 0) is predicted where it is, by every model;
 //   - |fitted offset| <= max(sum|w_free|, sum|w_exact|) * max_k |d_k|: no more than a fixed
 //     multiple of how far the finger moved in the last 100 ms;
@@ -55,7 +55,7 @@ namespace vimg {
 enum class TouchPredictionModel : std::uint8_t { none, linear, fitted, learned };
 inline constexpr int kTouchPredictionModelCount = 4;
 
-// The best out of sample (docs/latency.md, "How well it predicts").
+// The best out of sample (docs/touch-prediction.md, "How well it predicts").
 inline constexpr TouchPredictionModel kDefaultTouchPredictionModel = TouchPredictionModel::learned;
 
 // "none", "linear", "fitted", "learned".

@@ -1,8 +1,9 @@
 #pragma once
 // The `learned` model of the touch predictor (finger_predictor.hpp): a small fixed-weight network
 // trained on real finger traces (learned_weights.hpp, made by scripts/train_touch_predictor.py;
-// docs/latency.md, "The learned model"). Pure: no allocation, no clock, O(1) per prediction (at
-// most kHistoryCapacity points are looked at, then one forward pass of about 2 k multiply-adds).
+// docs/touch-prediction.md, "The learned model"). Pure: no allocation, no clock, O(1) per
+// prediction (at most kHistoryCapacity points are looked at, then one forward pass of about 2 k
+// multiply-adds).
 //
 // Inputs, from the caller's FingerHistory (its newest point p_0 at t_n):
 //   - the newest kLearnedPoints points at least kLearnedMinStep_s apart (the newest, then walking

@@ -216,7 +216,7 @@ TEST(RenderTouchLatency, ThePanelOptionsAreCheckedAndCompensationBringsTheOnsetB
   const std::string image = VIMG_SOURCE_DIR "/assets/examples/smiley.vimg";
   // The finger enters the face (top at y = 30 mm) from outside it, already moving: the default
   // (learned) model treats a stroke's first events as a finger starting from rest, as people's
-  // strokes do (docs/latency.md, "The learned model"), so a sweep that starts at full speed on a
+  // strokes do (docs/touch-prediction.md, "The learned model"), so a sweep that starts at full speed on a
   // primitive is not what compensation is for.
   ASSERT_EQ(test::run_command(kVimg + " gesture line --from 35,0 --to 35,60 --speed 150 --rate 60 --out " + t.at("g.csv")).exit_code, 0);
   const std::string base = kVimg + " render " + image + " --gesture " + t.at("g.csv");

@@ -4,7 +4,7 @@
 //     bit, from a tracker that is later given different events);
 //   - no runaway: every felt position lies within (h / 1 ms) D of the finger's last event, h the
 //     horizon plus the silence since that event, D the largest distance from it to the finger's
-//     events back to 2 ms before the newest one at least 100 ms old (docs/latency.md, "No offset
+//     events back to 2 ms before the newest one at least 100 ms old (docs/touch-prediction.md, "No offset
 //     runs away"), through silences of up to 150 ms, and a finger silent for 100 ms is where it
 //     was last seen.
 #include <gtest/gtest.h>

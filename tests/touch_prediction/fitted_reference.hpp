@@ -1,5 +1,5 @@
 #pragma once
-// The fitted model written out again from its documented equations (docs/latency.md, "The
+// The fitted model written out again from its documented equations (docs/touch-prediction.md, "The
 // predictor"; primitives/touch_prediction/finger_predictor.hpp), over the events a test fed in,
 // for the tests to compare the predictor with:
 //   d_k = p(t_n - k L) - p(t_n), k = 1..12, L = 1/120 s, p linear between events and equal to

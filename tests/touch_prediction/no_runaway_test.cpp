@@ -1,4 +1,4 @@
-// "No offset runs away" (docs/latency.md, "The predictor"), for every model of the enum: on random
+// "No offset runs away" (docs/touch-prediction.md, "The predictor"), for every model of the enum: on random
 // stop-and-go strokes with jittered event times (bursts a fraction of a millisecond apart, gaps,
 // silences) and jittered positions, every prediction h ahead of the last event lies within
 // (h / 1 ms) x D of the last position, D the largest distance from the last position to an event

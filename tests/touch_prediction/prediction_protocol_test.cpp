@@ -50,7 +50,7 @@ TEST(PredictionProtocol, ReproducesThePublishedBaselinesAndTheFittedModelBeatsLi
       EXPECT_EQ(e.model_mm[static_cast<int>(TouchPredictionModel::none)], e.none_mm) << "none is the last position";
       EXPECT_LT(fitted, e.authors_linear_mm) << task.prefix << " s=" << s;
       EXPECT_LT(fitted, linear) << task.prefix << " s=" << s;
-      // The fit's figures (docs/latency.md): at 33 ms about half the error of no extrapolation.
+      // The fit's figures (docs/touch-prediction.md): at 33 ms about half the error of no extrapolation.
       if (s == 2) {
         EXPECT_LT(fitted / e.none_mm, 0.53) << task.prefix;
       }
