@@ -143,7 +143,8 @@ int run(const std::string& vimg, const fs::path& source, const fs::path& work, c
   fs::create_directories(work / "assets");
   fs::create_directories(work / "results");
   for (const char* name : {"index.html", "vimg.js", "vimg.wasm", "worklet.js", "audio_clock.js", "study.html", "study.js",
-                           "picture.js", "dashboard.html"}) {
+                           "study_answers.js", "study_audio.js", "study_screens.js", "study_touch.js", "picture.js",
+                           "dashboard.html"}) {
     write_file_atomically(work / "assets" / name, std::string("stand-in ") + name + "\n");
   }
   const fs::path study_file = source / "assets/examples/matching/study.xml";

@@ -27,8 +27,10 @@ std::optional<WebSiteOptions> web_site_options(const std::string& actuator_profi
 std::filesystem::path web_assets_dir();
 inline constexpr const char* kWebAssetFiles[] = {"index.html", "picture.js", "audio_clock.js", "vimg.js", "vimg.wasm",
                                                    "worklet.js"};
-// The study's pages (vimg serve --study, docs/matching-test.md "The matching test in the browser"), beside those.
-inline constexpr const char* kStudyAssetFiles[] = {"study.html", "study.js", "dashboard.html"};
+// The study's pages (vimg serve --study, docs/matching-test.md "The matching test in the browser"), beside those:
+// study.html loads study.js and the study_*.js it uses.
+inline constexpr const char* kStudyAssetFiles[] = {"study.html", "study.js", "study_answers.js", "study_audio.js",
+                                                   "study_screens.js", "study_touch.js", "dashboard.html"};
 
 // The name an image has in the site (images/NAME.vsc): its file stem, characters other than
 // [A-Za-z0-9_.-] replaced by '_'.
