@@ -16,6 +16,7 @@
 
 #include "tests/net/raw_http.hpp"
 #include "tests/web_server/site_fixture.hpp"
+#include "tests/web_server/stub_api.hpp"
 
 namespace vimg::test {
 namespace {
@@ -102,6 +103,120 @@ TEST_F(ReplyBudget, RequestsThatFindTheBudgetFullAreServedOnceRoomIsFreed) {
   }
   EXPECT_EQ(server.counts().waiting_for_room, 0);
   EXPECT_EQ(server.counts().room_waits_expired, 0);
+}
+
+// A change of the copies retries the requests waiting for room in the order they came, one at a
+// time, and stops at the first that still finds none: 8 readers of b.bin wait beside a slow reader
+// of a.bin; a page's file is served (its copy made, then freed: two changes) and a HEAD after it
+// (no copy, no change) ends once both changes have been seen. The waiting requests' routes ran again
+// at most twice in all (the first waiter's, once per change), not 8 times per change. Seen to fail
+// (16 more routes than the 2 requests) with EngineState::wake_room_waiters retrying every waiter,
+// as before.
+TEST_F(ReplyBudget, AChangeRetriesTheFirstWaiterOnlyWhenItFindsNoRoom) {
+  constexpr int kWaiting = web::kRouteWorkerThreads * 2;
+  sparse_file(site_ / "a.bin", kFileBytes);
+  sparse_file(site_ / "b.bin", kFileBytes);
+  WebServer& server = start_server([](WebServerOptions& options) {
+    options.limits.reply_budget_bytes = kBudgetBytes;
+    options.limits.reply_budget_wait = kHangBound;
+  });
+  auto slow = std::make_unique<RawConnection>(port());
+  ASSERT_TRUE(slow->send_all("GET /a.bin HTTP/1.1\r\nHost: localhost\r\n\r\n"));
+  ASSERT_TRUE(slow->read_until("\r\n\r\n"));
+  std::vector<std::unique_ptr<RawConnection>> waiting;
+  for (int i = 0; i < kWaiting; ++i) {
+    waiting.push_back(std::make_unique<RawConnection>(port()));
+    ASSERT_TRUE(waiting.back()->send_all("GET /b.bin HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"));
+  }
+  ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == kWaiting; }));
+  const long routes_before = server.counts().routes_queued;
+  EXPECT_EQ(exchange(port(), "GET", "/index.html").status, 200);
+  // Its copy was freed, and the change posted to the network thread, before its connection
+  // closed; the HEAD's request is read after that change has been handled.
+  EXPECT_EQ(exchange(port(), "HEAD", "/index.html").status, 200);
+  ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == kWaiting; }));
+  const long retries = server.counts().routes_queued - routes_before - 2;
+  EXPECT_LE(retries, 2) << "routes run again for " << kWaiting << " waiters after two changes";
+  slow.reset();  // room: every waiter is served in turn
+  for (auto& connection : waiting) {
+    ASSERT_TRUE(connection->read_to_end());
+    const HttpResponse reply = parse_response(connection->received());
+    EXPECT_EQ(reply.status, 200);
+    EXPECT_EQ(reply.body.size(), kFileBytes);
+  }
+  EXPECT_EQ(server.counts().waiting_for_room, 0);
+}
+
+// A waiter that would fit is not held for good behind the first, which does not: slow readers hold
+// 20 + 10 of the 32 MiB; a reader of b.bin (24 MiB) waits, then one of c.bin (8 MiB). The 10 MiB
+// reader goes: c.bin would fit, but the change retries b.bin first, which still does not, and c.bin
+// waits behind it. When b.bin's wait ends (503), c.bin runs again and is served. Seen to fail (c.bin
+// 503 at its own deadline) without the retry of the next waiter in Session::wait_for_room's timer.
+TEST_F(ReplyBudget, TheNextWaiterRunsAgainWhenTheFirstWaitEnds) {
+  sparse_file(site_ / "a.bin", std::size_t{20} << 20);
+  sparse_file(site_ / "d.bin", std::size_t{10} << 20);
+  sparse_file(site_ / "b.bin", std::size_t{24} << 20);
+  sparse_file(site_ / "c.bin", std::size_t{8} << 20);
+  WebServer& server = start_server([](WebServerOptions& options) {
+    options.limits.reply_budget_bytes = kBudgetBytes;
+    options.limits.reply_budget_wait = std::chrono::milliseconds(300);
+  });
+  RawConnection slow_a(port());
+  auto slow_d = std::make_unique<RawConnection>(port());
+  for (auto [connection, file] : {std::pair{&slow_a, "a"}, std::pair{slow_d.get(), "d"}}) {
+    ASSERT_TRUE(connection->send_all(std::string("GET /") + file + ".bin HTTP/1.1\r\nHost: localhost\r\n\r\n"));
+    ASSERT_TRUE(connection->read_until("\r\n\r\n"));
+  }
+  RawConnection first(port()), next(port());
+  ASSERT_TRUE(first.send_all("GET /b.bin HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"));
+  ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == 1; }));
+  ASSERT_TRUE(next.send_all("GET /c.bin HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"));
+  ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == 2; }));
+  slow_d.reset();
+  ASSERT_TRUE(first.read_to_end());
+  EXPECT_EQ(parse_response(first.received()).status, 503);
+  ASSERT_TRUE(next.read_to_end());
+  const HttpResponse reply = parse_response(next.received());
+  EXPECT_EQ(reply.status, 200);
+  EXPECT_EQ(reply.body.size(), std::size_t{8} << 20);
+  EXPECT_EQ(server.counts().room_waits_expired, 1);
+}
+
+// The waiter run again for room is never held behind another route of its client (one key's routes
+// otherwise run one at a time): a reader of b.bin with key k1 waits for room, then k1's other
+// request is held in its route, and an unkeyed reader of b.bin waits behind the first. Once the
+// slow reader goes, both are served while k1's other request is still held. Seen to fail (no reply
+// within the client's 60 s: the first waiter's retry queued behind k1's held route, and the
+// second never tried) with Session::queue_route keeping the client's turn for a route run again.
+TEST_F(ReplyBudget, AWaiterRunAgainSkipsItsClientsTurn) {
+  StubApi api(root_ / "answers.txt");
+  sparse_file(site_ / "a.bin", kFileBytes);
+  sparse_file(site_ / "b.bin", kFileBytes);
+  WebServer& server = start_server([&](WebServerOptions& options) {
+    api.install(options);
+    options.limits.reply_budget_bytes = kBudgetBytes;
+    options.limits.reply_budget_wait = kHangBound;
+  });
+  auto slow = std::make_unique<RawConnection>(port());
+  ASSERT_TRUE(slow->send_all("GET /a.bin HTTP/1.1\r\nHost: localhost\r\n\r\n"));
+  ASSERT_TRUE(slow->read_until("\r\n\r\n"));
+  RawConnection keyed(port()), held(port()), unkeyed(port());
+  ASSERT_TRUE(keyed.send_all("GET /b.bin HTTP/1.1\r\nHost: localhost\r\nX-Vimg-Key: k1\r\nConnection: close\r\n\r\n"));
+  ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == 1; }));
+  ASSERT_TRUE(held.send_all("GET /api/block HTTP/1.1\r\nHost: localhost\r\nX-Vimg-Key: k1\r\nConnection: close\r\n\r\n"));
+  ASSERT_TRUE(api.reads.wait_for_waiters(1));  // k1's turn is taken
+  ASSERT_TRUE(unkeyed.send_all("GET /b.bin HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"));
+  ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == 2; }));
+  slow.reset();
+  for (RawConnection* waiter : {&keyed, &unkeyed}) {
+    ASSERT_TRUE(waiter->read_to_end());
+    const HttpResponse reply = parse_response(waiter->received());
+    EXPECT_EQ(reply.status, 200);
+    EXPECT_EQ(reply.body.size(), kFileBytes);
+  }
+  api.reads.open();
+  ASSERT_TRUE(held.read_to_end());
+  EXPECT_EQ(parse_response(held.received()).status, 200);
 }
 
 // A request waits for room no longer than the reply budget wait (shrunk here to 300 ms): then it

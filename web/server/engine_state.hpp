@@ -15,12 +15,12 @@
 #include <deque>
 #include <exception>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <optional>
 #include <unordered_map>
-#include <vector>
 
 #include "web/server/http_engine.hpp"
 
@@ -36,7 +36,8 @@ class Connection {
   virtual void start() = 0;
   virtual void abort() = 0;           // closes the socket now
   virtual void events_changed() {}    // an event stream sends what is new
-  virtual void retry_for_room() {}    // a request waiting for room runs its route again
+  // A request waiting for room runs its route again: false when it no longer waits.
+  virtual bool retry_for_room() { return false; }
   // The server stops: a connection whose route is under way sends its reply and then closes;
   // any other closes now.
   virtual void stop_gracefully() { abort(); }
@@ -81,10 +82,14 @@ struct EngineState {
   std::optional<net::steady_timer> stop_deadline;  // while stopping: closes what is left
   AtomicCounts counts;
   std::unordered_map<std::string, ClientQueue> client_queues[2];  // [0]: reading pool, [1]: writing pool
-  // The requests waiting for room in the reply budget (each takes itself out when it stops
-  // waiting), and how many times the copies changed: a route that found no room and comes back
-  // after a change it did not see is run again at once instead of waiting.
-  std::unordered_map<Connection*, std::weak_ptr<Connection>> room_waiters;
+  // The requests waiting for room in the reply budget, by the order in which they first found none
+  // (each takes itself out when it stops waiting, and goes back to its place when it still finds
+  // none); the one of them whose route runs again now, if any (one at a time); and how many times
+  // the copies changed: a route that found no room and comes back after a change it did not see is
+  // run again at once instead of waiting.
+  std::map<std::uint64_t, std::weak_ptr<Connection>> room_waiters;
+  std::uint64_t next_room_ticket = 0;
+  Connection* room_retrying = nullptr;
   std::uint64_t room_generation = 0;
   // Routes handed to a pool (or waiting for their client's turn) whose reply has not come back;
   // stop() waits for none to be left before it joins the pools.
@@ -128,16 +133,34 @@ struct EngineState {
 
   const HttpLimits& limits() const { return routes.limits; }
 
-  // The copies changed (one freed, or one made): every request waiting for room runs its route again.
+  // The copies changed (one freed, or one made): the first request waiting for room runs its route
+  // again, unless one does already (it then runs again itself, having missed this change).
   void wake_room_waiters() {
     ++room_generation;
-    std::vector<std::weak_ptr<Connection>> waiting;
-    waiting.reserve(room_waiters.size());
-    for (const auto& [raw, weak] : room_waiters) waiting.push_back(weak);
-    room_waiters.clear();
-    for (const auto& weak : waiting) {
-      if (auto connection = weak.lock()) connection->retry_for_room();
+    retry_next_room_waiter();
+  }
+
+  // The first request waiting for room runs its route again, if none does now. Called again when
+  // that one is served or leaves, so that the next follows; when it still finds no room it goes
+  // back to its place and the others wait for the next change (in order: stopped at the first
+  // that does not fit).
+  void retry_next_room_waiter() {
+    while (room_retrying == nullptr && !stopping && !room_waiters.empty()) {
+      const auto [ticket, weak] = *room_waiters.begin();
+      const std::shared_ptr<Connection> first = weak.lock();
+      room_retrying = first.get();
+      if (!first || !first->retry_for_room()) {  // gone, or no longer waiting: not a waiter
+        room_retrying = nullptr;
+        room_waiters.erase(ticket);
+      }
     }
+  }
+
+  // `connection`'s retry has ended (it was served, refused, closed, or waits again): the next may run.
+  void room_retry_ended(Connection* connection, bool next) {
+    if (room_retrying != connection) return;
+    room_retrying = nullptr;
+    if (next) retry_next_room_waiter();
   }
 
   // A connection has closed (each calls this once).

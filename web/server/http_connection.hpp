@@ -33,12 +33,10 @@ namespace vimg::web {
 namespace http = beast::http;
 using TlsStream = net::ssl::stream<beast::tcp_stream>;
 
-// Room for the whole header, the largest body and a pipelined request's start.
-inline constexpr std::size_t kMaxBufferedBytes = 32768;
+inline constexpr std::size_t kMaxBufferedBytes = 32768;  // the whole header, the largest body, a pipelined start
 
-// The request's framing is one the server will read: a single Content-Length, or chunked alone.
-// Anything else (both, a length twice, a list of lengths, another transfer coding) could be read
-// differently by a proxy in front, so it is refused with 400.
+// The request's framing is one the server will read: a single Content-Length, or chunked alone. Anything
+// else (both, a length twice, a list, another coding) a proxy in front could read differently: 400.
 inline bool unambiguous_framing(const http::request_parser<http::string_body>::value_type& head) {
   const auto lengths = head.count(http::field::content_length);
   const auto codings = head.count(http::field::transfer_encoding);
@@ -78,10 +76,11 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     finish();
   }
 
-  void retry_for_room() override {
-    if (!waiting_for_room_ || finished_) return;
+  bool retry_for_room() override {
+    if (!waiting_for_room_ || finished_) return false;
     stop_waiting_for_room();
     queue_route();
+    return true;
   }
 
   void events_changed() override {
@@ -106,6 +105,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     parser_->body_limit(std::numeric_limits<std::uint64_t>::max());
     request_ = HttpRequest{};
     room_deadline_.reset();
+    room_ticket_.reset();
     // One deadline for the whole header, however its bytes trickle (not one per read).
     tcp_layer().expires_after(engine_.limits().header_deadline);
     http::async_read_header(stream_, buffer_, *parser_, [self = this->shared_from_this()](beast::error_code ec, std::size_t) {
@@ -175,9 +175,8 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     });
   }
 
-  // Refused at once by the screen, or the route runs on a worker of its queue and the reply comes
-  // back to this thread. Meanwhile the socket is watched: a client that closes (or half-closes) is
-  // dropped and its route not run.
+  // Refused at once by the screen, or the route runs on a worker of its queue and the reply comes back
+  // here; meanwhile a client that closes (or half-closes) is dropped and its route not run.
   void dispatch() {
     tcp_layer().expires_never();
     if (engine_.routes.screen) {
@@ -196,9 +195,11 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
 
   void queue_route() {
     const int pool = request_.method == "POST" ? 1 : 0;
+    // Run again for room (a file's, no lock), it skips its client's turn: never held behind another.
+    std::string queue = room_deadline_ ? std::string() : client_;
     queued_generation_ = engine_.room_generation;
     ++engine_.counts.routes_queued;
-    engine_.run_route_job(pool, client_, [self = this->shared_from_this(), pool]() mutable {
+    engine_.run_route_job(pool, queue, [self = this->shared_from_this(), pool, queue]() mutable {
       HttpReply reply;
       std::string failure;
       if (self->departed_.load()) {
@@ -207,8 +208,8 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
         reply = run_route(self->engine_.routes.respond, self->request_, failure);
       }
       EngineState& engine = self->engine_;
-      net::post(engine.io, [self = std::move(self), reply = std::move(reply), failure = std::move(failure), pool]() mutable {
-        self->engine_.route_job_done(pool, self->client_);
+      net::post(engine.io, [self = std::move(self), reply = std::move(reply), failure = std::move(failure), pool, queue]() mutable {
+        self->engine_.route_job_done(pool, queue);
         self->log_failure(failure);
         self->route_done(std::move(reply));
       });
@@ -221,18 +222,20 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     if (engine_.routes.log_failure) engine_.routes.log_failure(request_, failure);
   }
 
-  // The route's reply: sent, or (no room for it yet) the route runs again each time the copies
-  // change, until the reply budget wait has passed since it first found none.
+  // The route's reply: sent, or (no room yet) it waits in its place, in turn to run again when the
+  // copies change (EngineState::retry_next_room_waiter), until the reply budget wait has passed.
   void route_done(HttpReply reply) {
     if (reply.wait_for_room && !finished_ && !engine_.stopping) {
       const auto now = std::chrono::steady_clock::now();
       if (!room_deadline_) room_deadline_ = now + engine_.limits().reply_budget_wait;
       if (now < *room_deadline_) {
         if (engine_.room_generation != queued_generation_) return queue_route();  // changed meanwhile
+        engine_.room_retry_ended(this, false);  // still no room: the others wait for the next change
         return wait_for_room(std::move(reply));
       }
       ++engine_.counts.room_waits_expired;
     }
+    engine_.room_retry_ended(this, true);  // served, or its wait is over: the next may fit
     in_flight_ = false;
     beast::error_code ignored;
     tcp_layer().socket().cancel(ignored);  // the watch
@@ -244,12 +247,14 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     waiting_reply_ = std::move(reply);
     waiting_for_room_ = true;
     ++engine_.counts.waiting_for_room;
-    engine_.room_waiters.emplace(this, this->weak_from_this());
+    if (!room_ticket_) room_ticket_ = engine_.next_room_ticket++;  // its place, kept while it waits again
+    engine_.room_waiters.emplace(*room_ticket_, this->weak_from_this());
     room_timer_.expires_at(*room_deadline_);
     room_timer_.async_wait([self = this->shared_from_this()](beast::error_code ec) {
       if (ec || !self->waiting_for_room_) return;
       self->stop_waiting_for_room();
       self->route_done(std::move(self->waiting_reply_));  // past the deadline: the 503
+      self->engine_.retry_next_room_waiter();  // the next in turn, which may fit where this did not
     });
   }
 
@@ -257,7 +262,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     if (!waiting_for_room_) return;
     waiting_for_room_ = false;
     --engine_.counts.waiting_for_room;
-    engine_.room_waiters.erase(this);
+    engine_.room_waiters.erase(*room_ticket_);
     room_timer_.cancel();
   }
 
@@ -364,6 +369,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
     if (finished_) return;
     finished_ = true;
     stop_waiting_for_room();
+    engine_.room_retry_ended(this, true);
     tcp_layer().close();
     events_.close(engine_.routes.events);
     reply_.shared_body.reset();
@@ -382,6 +388,7 @@ class Session final : public Connection, public std::enable_shared_from_this<Ses
   EventStreamWriter events_;
   net::steady_timer room_timer_;  // the end of the wait for room
   std::optional<std::chrono::steady_clock::time_point> room_deadline_;  // set when the request first waits
+  std::optional<std::uint64_t> room_ticket_;  // its place among those waiting (EngineState::room_waiters)
   HttpReply waiting_reply_;  // while waiting for room: the route's 503, sent at the deadline
   std::uint64_t queued_generation_ = 0;  // EngineState::room_generation when the route was queued
   bool waiting_for_room_ = false;

@@ -218,6 +218,7 @@ void HttpEngine::stop() {
   s.state.client_queues[0].clear();
   s.state.client_queues[1].clear();
   s.state.room_waiters.clear();
+  s.state.room_retrying = nullptr;
   s.state.connections = s.state.refusing = 0;
   s.state.counts.open_connections = 0;
 }

@@ -39,7 +39,7 @@ struct HttpRoutes {
   // queueing. Empty: nothing is refused here. One that throws answers 500, as respond() does.
   std::function<std::optional<HttpReply>(const HttpRequest&)> screen;
   // On a worker: the reply. A reply with event_stream opened a stream of `events` (its cursor); one
-  // with wait_for_room is run again by retry_room_waiters(), or sent after the wait.
+  // with wait_for_room waits its turn to run again (retry_room_waiters()), or is sent after the wait.
   std::function<HttpReply(const HttpRequest&)> respond;
   // On the network thread: every reply sent, or refused before a route saw it.
   std::function<void(const HttpRequest&, const HttpReply&)> log;
@@ -82,8 +82,9 @@ class HttpEngine {
   // Each open event stream sends what was published since its cursor.
   void wake_event_streams();
   // Room may have come (a file copy of the reply budget freed, or one made that a waiting request
-  // may share): the requests waiting for room run their route again. From any thread; nothing once
-  // stopped.
+  // may share): the first request waiting for room runs its route again, and the next once it is
+  // served (in the order they came, stopping at the first that finds none). From any thread;
+  // nothing once stopped.
   void retry_room_waiters();
   // Closes the listening socket, the idle connections and the event streams; the routes under way
   // run to their end and their replies are sent (within limits.stop_grace_deadline, then every

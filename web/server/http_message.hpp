@@ -44,8 +44,8 @@ struct HttpReply {
   bool event_stream = false;  // chunked, and the stream's messages follow (web/server/event_stream.hpp)
   std::int64_t stream_cursor = 0;
   // The route found no room (the reply budget full, web/server/file_copies.hpp): the engine runs it
-  // again each time the copies change (HttpEngine::retry_room_waiters: one freed, or one made that
-  // it may share), holding no reply meanwhile, and sends this reply (a 503) only once
+  // again in its turn when the copies change (HttpEngine::retry_room_waiters: one freed, or one made
+  // that it may share), holding no reply meanwhile, and sends this reply (a 503) only once
   // HttpLimits::reply_budget_wait has passed since it first waited.
   bool wait_for_room = false;
 
