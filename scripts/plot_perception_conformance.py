@@ -129,7 +129,7 @@ def main():
     ax.set_xscale("log")
     ax.set_ylim(-0.7, len(many) - 0.2)
     ax.set_xlabel("bits, or percent correct (log scale)")
-    ax.set_title("Several dimensions: deviations, pinned")
+    ax.set_title("Several dimensions (the tactons a pinned deviation)")
 
     fig.suptitle("Perception model (black) against published ranges (shaded)")
     fig.tight_layout()

@@ -13,6 +13,7 @@
 #include "storage/limits.hpp"
 #include "storage/parallel_tasks.hpp"
 #include "study/compare_render.hpp"
+#include "study/separate_search.hpp"
 #include "storage/signal_file.hpp"
 
 namespace vimg::study {
@@ -90,6 +91,27 @@ std::string confusion_warning(const std::string& label_a, const std::string& lab
   char text[64];
   std::snprintf(text, sizeof text, "%.2f", p);
   return label_a + " ~ " + label_b + ": likely confused (p = " + text + ")";
+}
+
+std::vector<std::string> poorly_identified_warnings(const PerceptionMatrix& confusion, const std::vector<ConfusedPair>& pairs,
+                                                    const std::vector<std::string>& labels) {
+  std::vector<std::string> warnings;
+  for (std::size_t i = 0; i < confusion.size() && i < labels.size(); ++i) {
+    const auto in_pair = [i](const ConfusedPair& pair) { return pair.a == i || pair.b == i; };
+    if (confusion[i].size() <= std::max<std::size_t>(i, 1) || confusion[i][i] >= kIdentifiedTarget || std::any_of(pairs.begin(), pairs.end(), in_pair))
+      continue;
+    std::size_t most = i == 0 ? 1 : 0;
+    for (std::size_t j = 0; j < confusion[i].size() && j < labels.size(); ++j)
+      if (j != i && confusion[i][j] > confusion[i][most]) most = j;
+    if (most >= labels.size() || most >= confusion[i].size()) continue;
+    char text[160];
+    std::snprintf(text, sizeof text, ": identified %.0f %% of the time (below %.0f %%), most often taken for ",
+                  100.0 * confusion[i][i], 100.0 * kIdentifiedTarget);
+    char p[32];
+    std::snprintf(p, sizeof p, " (p = %.2f)", confusion[i][most]);
+    warnings.push_back(labels[i] + text + labels[most] + p);
+  }
+  return warnings;
 }
 
 CompareResult run_compare(const CompareRequest& request) {
@@ -199,6 +221,9 @@ CompareResult run_compare(const CompareRequest& request) {
   r.likely_confused = likely_confused_pairs(r.predicted_confusion, request.choice);
   for (const ConfusedPair& pair : r.likely_confused)
     r.warnings.push_back(confusion_warning(r.inputs[pair.a].label, r.inputs[pair.b].label, pair.p));
+  std::vector<std::string> labels;
+  for (const CompareInput& in : r.inputs) labels.push_back(in.label);
+  for (std::string& w : poorly_identified_warnings(r.predicted_confusion, r.likely_confused, labels)) r.warnings.push_back(std::move(w));
   return r;
 }
 

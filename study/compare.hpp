@@ -100,6 +100,14 @@ CompareInputKind compare_input_kind(const std::filesystem::path& path);
 // The warning for one likely confused pair: "A.vimg ~ B.vimg: likely confused (p = 0.50)".
 std::string confusion_warning(const std::string& label_a, const std::string& label_b, double p);
 
+// The warning for an image identified less than kIdentifiedTarget (`vimg separate`'s default
+// target) of the time though no image is likely confused with it (its confusions are spread, or
+// each below likely_confused_p): "B.vimg: identified 69 % of the time (below 90 %), most often
+// taken for A.vimg (p = 0.15)". One per such image, after the pairs' warnings; an image in a likely
+// confused pair has its warning already.
+std::vector<std::string> poorly_identified_warnings(const PerceptionMatrix& confusion, const std::vector<ConfusedPair>& pairs,
+                                                    const std::vector<std::string>& labels);
+
 // The whole comparison. Errors (an input that does not load, images of different canvas sizes, a
 // canvas too large for the standard exploration, fewer than 2 or more than kMaxCompareInputs
 // inputs) come back as diagnostics; the caller prints them.

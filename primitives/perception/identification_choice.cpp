@@ -9,10 +9,11 @@ namespace {
 
 double non_negative(double x) { return std::isnan(x) || x < 0.0 ? 0.0 : x; }
 
-// Phi(-x / 2) / Phi(x / 2) for x >= 0, through erfc (no cancellation for large x).
-double confusability(double d_prime) {
+// ln(Phi(-x / 2) / Phi(x / 2)) for x >= 0, through erfc (no cancellation for large x); -inf once
+// the tail underflows, which exp() turns back into a confusability of 0.
+double log_confusability(double d_prime) {
   const double tail = 0.5 * std::erfc(d_prime / (2.0 * std::sqrt(2.0)));
-  return tail / (1.0 - tail);
+  return std::log(tail) - std::log1p(-tail);
 }
 
 }  // namespace
@@ -25,16 +26,21 @@ std::array<double, kCueCount> cue_ranges_jnd(const CueMatrix& d) {
   return r;
 }
 
-double identification_d_prime(const CueDistances& d, const std::array<double, kCueCount>& ranges_jnd,
-                              const DiscriminationConstants& k) {
-  double sum = 0.0;
+std::array<double, kCueCount> identification_d_primes(const CueDistances& d, const std::array<double, kCueCount>& ranges_jnd,
+                                                      const DiscriminationConstants& k) {
+  std::array<double, kCueCount> d_primes{};
   for (std::size_t c = 0; c < kCueCount; ++c) {
     const double w = non_negative(k.cue_weight[c]);
     const double range = kContextNoisePerDPrime * kDPrimePerJnd * w * non_negative(ranges_jnd[c]);
-    const double term = kDPrimePerJnd * w * non_negative(d[c]) / std::sqrt(1.0 + range * range);
-    sum += term * term;
+    d_primes[c] = kDPrimePerJnd * w * non_negative(d[c]) / std::sqrt(1.0 + range * range);
   }
-  return std::sqrt(sum);
+  return d_primes;
+}
+
+double identification_confusability(const std::array<double, kCueCount>& d_primes) {
+  double log_eta = 0.0;
+  for (const double d_prime : d_primes) log_eta += log_confusability(non_negative(d_prime));
+  return std::exp(log_eta);
 }
 
 PerceptionMatrix identification_confusion(const CueMatrix& d, const DiscriminationConstants& k) {
@@ -45,7 +51,7 @@ PerceptionMatrix identification_confusion(const CueMatrix& d, const Discriminati
   for (std::size_t i = 0; i < n; ++i) {
     double total = 0.0;
     for (std::size_t j = 0; j < n; ++j) {
-      p[i][j] = i == j ? 1.0 : j < d[i].size() ? confusability(identification_d_prime(d[i][j], ranges, k)) : 0.0;
+      p[i][j] = i == j ? 1.0 : j < d[i].size() ? identification_confusability(identification_d_primes(d[i][j], ranges, k)) : 0.0;
       total += p[i][j];
     }
     for (double& value : p[i]) value = (1.0 - guess) * value / total + guess / static_cast<double>(n);

@@ -12,14 +12,18 @@
 //              k = sqrt(2) z(0.75) = 0.954: one JND (75 % correct in two intervals) as d'
 //              R_c = k w_c max_ab d_c,ab: the set's range along the cue, as d'
 //              G = kContextNoisePerDPrime: context noise per unit of range
-//   d'_ij    = sqrt(sum_c d'_c,ij^2)                       independent cues
-//   eta_ij   = Phi(-d'_ij / 2) / Phi(d'_ij / 2)            pairwise confusability (eta_ii = 1)
+//   eta_c,ij = Phi(-d'_c,ij / 2) / Phi(d'_c,ij / 2)     one cue's confusability (1 on the diagonal)
+//   eta_ij   = prod_c eta_c,ij                          independent cues multiply
 //   p(j | i) = (1 - lapse) eta_ij / sum_k eta_ik + lapse / n    (Luce's similarity choice model)
 //
-// For two images the choice is exactly that of an observer who picks the nearer of the two in
-// Gaussian noise: p = Phi(-d'/2), so images one JND apart are confused 32 % of the time when each
-// is felt alone (against 25 % in a two-interval trial: discrimination_choice.hpp). For more images
-// it is Luce's approximation of that observer.
+// What the rule is exact for, against the observer who picks the nearest image in independent
+// Gaussian noise on each cue: two images that differ on one cue (p = Phi(-d'/2): one JND apart,
+// felt alone, they are confused 32 % of the time, against 25 % in a two-interval trial,
+// discrimination_choice.hpp); and every set that is a full grid over its cues, whose matrix is the
+// product of the cues' own matrices, so that information adds over independent cues. Where it is
+// not: a pair that differs on several cues near threshold, told apart better than that observer
+// could (one JND on each of two cues: 17.8 % confused against 25.1 %); pinned by
+// `Identification.APairThatDiffersOnTwoCuesIsToldApartBetterThanTheNearestChoiceObserver`.
 //
 // Threads: pure functions over caller-owned data.
 #include <array>
@@ -31,15 +35,18 @@ namespace vimg {
 
 inline constexpr double kDPrimePerJnd = 0.9538725524;  // sqrt(2) * Phi^-1(0.75)
 // Reasoned from the published ranges (docs/perception.md says how): one-dimensional sets of 3 to
-// 12 images transfer 1.3-1.8 bits at any spacing, three-dimensional ones 4-5 bits.
-inline constexpr double kContextNoisePerDPrime = 0.08;
+// 12 images transfer 1.2-1.7 bits at any spacing, three-dimensional ones 4.5-4.9 bits.
+inline constexpr double kContextNoisePerDPrime = 0.09;
 
 // The range of the set along each cue, JNDs (the largest distance of any pair on that cue).
 std::array<double, kCueCount> cue_ranges_jnd(const CueMatrix& d);
 
-// d'_ij of one pair of a set whose ranges are `ranges_jnd` (cue_ranges_jnd).
-double identification_d_prime(const CueDistances& d, const std::array<double, kCueCount>& ranges_jnd,
-                              const DiscriminationConstants& k = {});
+// d'_c of one pair on each cue, in a set whose ranges are `ranges_jnd` (cue_ranges_jnd).
+std::array<double, kCueCount> identification_d_primes(const CueDistances& d, const std::array<double, kCueCount>& ranges_jnd,
+                                                      const DiscriminationConstants& k = {});
+
+// eta_ij of one pair from its d'_c: the product of the cues' confusabilities, in [0, 1].
+double identification_confusability(const std::array<double, kCueCount>& d_primes);
 
 // d: square [presented][chosen]. Rows sum to 1; the lapse rate is clamped to [0, 1]; empty for an
 // empty input. The temperature of the constants is not used (it belongs to discrimination).

@@ -5,8 +5,9 @@
 // path `vimg compare` takes; the information transfer of the predicted matrix is checked against a
 // direct mutual-information sum written here. Every check says its kind (docs/perception.md):
 //   [calibration]    kContextNoisePerDPrime was set on Rabinowitz et al.'s ranges (one-dimensional
-//                    sets 1-2 bits, three-dimensional 4-5), so those checks test the rendered path
-//                    (threshold, summation, cues), not a prediction;
+//                    sets 1-2 bits, three-dimensional 4-5), here and in identification_choice_test,
+//                    so those checks test the rendered path (threshold, summation, cues), not a
+//                    prediction;
 //   [out of sample]  nothing was set on Azadi & Jones's nine tactons, nor on the segregation of
 //                    rhythms (Jurado et al. 2021).
 // The stimuli's values are ours: the sources' abstracts give the dimensions, not the values, and
@@ -140,34 +141,38 @@ TEST(IdentificationConformance, OneDimensionalSetsOfLevelTransferOneToTwoBits) {
 }
 
 // Rabinowitz et al.'s three dimensions were intensity, frequency and contactor area; the model has
-// no spatial cue, so the third dimension here is rhythm (1 to 5 bursts in 1 s). The model falls
-// short of the published 4-5 bits, and not for the rhythm: five rhythms alone are identified
-// without error (2.32 bits, log2 5; next test: each 12 JNDs or more from the others), while
-// frequency and level together transfer only about 2.2 bits, less than their one-dimensional sets
-// add to: Luce's rule is not additive over cues (Identification.LucesRuleOverAGridTransfersLess-
-// ThanItsCuesAdd). Pinned as a deviation (docs/perception.md): this fails when the model reaches
-// the published range, so that the docs are redone.
-TEST(IdentificationConformance, AThreeDimensionalSetFallsShortOfThePublishedFourToFiveBits) {
+// no spatial cue, so the third dimension here is rhythm (1 to 5 bursts in 1 s). Five rhythms alone
+// are identified without error (2.32 bits, log2 5; next test: each 12 JNDs or more from the
+// others). Frequency and level together transfer less than their one-dimensional sets add to: a
+// tone's frequency moves the level cue as well as the pitch cue (about 2 level JNDs per step of
+// the 40-250 Hz set), so the level cue's range and its context noise grow, the interaction
+// Rabinowitz et al. found largest for intensity. Calibration: G was set on this range.
+TEST(IdentificationConformance, AThreeDimensionalSetTransfersFourToFiveBits) {
   const std::vector<double> frequencies = spread(40.0, 250.0, 5, true);
   const std::vector<double> levels = spread(10.0, 50.0, 5, false);
-  std::vector<Stimulus> set, rhythms, frequency_by_level;
-  for (const double f : frequencies)
+  std::vector<Stimulus> set, rhythms, frequency_by_level, frequency_alone, level_alone;
+  for (const double f : frequencies) {
+    frequency_alone.push_back({f, 30.0, 1});
     for (const double sl : levels) {
       frequency_by_level.push_back({f, sl, 1});
       for (const int pulses : {1, 2, 3, 4, 5}) set.push_back({f, sl, pulses});
     }
+  }
+  for (const double sl : levels) level_alone.push_back({250.0, sl, 1});
   for (const int pulses : {1, 2, 3, 4, 5}) rhythms.push_back({250.0, 30.0, pulses});
   const double it = it_bits(identify(set));
   const double rhythm_it = it_bits(identify(rhythms));
   const double two_it = it_bits(identify(frequency_by_level));
+  const double frequency_it = it_bits(identify(frequency_alone));
+  const double level_it = it_bits(identify(level_alone));
   const test::PublishedRange range = published("identification_information_transfer_bits_three_dimensions");
   report("3 dimensions: bits", set.size(), it, range);
-  std::printf("three dimensions: rhythm alone %.2f bits, frequency x level %.2f bits\n", rhythm_it, two_it);
-  EXPECT_LT(it, range.low) << kCalibration << "(pinned deviation) " << it << " bits: now within or above the published "
-                           << range.low << "-" << range.high << ": redo docs/perception.md";
-  EXPECT_GT(it, 3.4) << kCalibration << "(pinned deviation) " << it << " bits";
-  EXPECT_GT(rhythm_it, std::log2(5.0) - 0.05) << "(pinned) five rhythms alone: " << rhythm_it << " bits";
-  EXPECT_LT(two_it, 2.5) << "(pinned) frequency x level, 25 members: " << two_it << " bits: redo docs/perception.md";
+  std::printf("three dimensions: rhythm alone %.2f bits, frequency x level %.2f bits (frequency alone %.2f, level alone %.2f)\n",
+              rhythm_it, two_it, frequency_it, level_it);
+  EXPECT_TRUE(range.holds(it)) << kCalibration << it << " bits, published " << range.low << "-" << range.high;
+  EXPECT_GT(rhythm_it, std::log2(5.0) - 0.05) << "five rhythms alone: " << rhythm_it << " bits";
+  EXPECT_LT(two_it, frequency_it + level_it) << "frequency x level: " << two_it << " bits, no interaction";
+  EXPECT_GT(two_it, std::max(frequency_it, level_it)) << "frequency x level: " << two_it << " bits, the cues do not add";
 }
 
 // Successive vibrotactile stimuli separated by at least about 80-90 ms are felt apart (Jurado et al.
@@ -232,8 +237,8 @@ double sampled_it_bits(const PerceptionMatrix& p, int presentations) {
 // The model identifies our nine tactons better than Azadi & Jones's participants identified
 // theirs: pinned as a deviation (docs/perception.md). Their values are not in the abstract (nor in
 // any text found); ours are 4 frequency JNDs and 5 level JNDs apart with three rhythms each 12 JNDs
-// or more apart, where the model sees little context noise (few values per cue) and adds the cues
-// as independent.
+// or more apart, where the model sees little context noise (few values per cue) and multiplies the
+// cues' confusabilities (every two tactons differ on two cues or three).
 TEST(IdentificationConformance, NineTactonsOverThreeDimensionsAreIdentifiedBetterThanPublished) {
   const PerceptionMatrix p = identify(nine_tactons());
   const double correct = percent_correct(p);
@@ -247,7 +252,7 @@ TEST(IdentificationConformance, NineTactonsOverThreeDimensionsAreIdentifiedBette
   EXPECT_GT(correct, pc.high) << kOutOfSample << "(pinned deviation) " << correct << " % correct: now within " << pc.low << "-"
                               << pc.high << ", redo docs/perception.md";
   EXPECT_GT(sampled, bits.high) << kOutOfSample << "(pinned deviation) " << sampled << " bits estimated from 72 trials";
-  EXPECT_LT(correct, 99.5) << kOutOfSample << "(pinned deviation) " << correct << " % correct";
+  EXPECT_LT(correct, 99.9) << kOutOfSample << "(pinned deviation) " << correct << " % correct";
 }
 
 }  // namespace

@@ -18,12 +18,12 @@ using SplitMix = SplitMix64;  // primitives/random/splitmix64.hpp
 
 // The model's choice probabilities of one presented image, from the equation of
 // primitives/perception/identification_choice.hpp:
-//   R_c = k w_c max_ab d_ab,c,  d'_ij = sqrt(sum_c (k w_c d_ij,c / sqrt(1 + (G R_c)^2))^2),
-//   eta_ij = Phi(-d'_ij/2) / Phi(d'_ij/2),  p(j|i) = (1 - lapse) eta_ij / sum_m eta_im + lapse / n,
+//   R_c = k w_c max_ab d_ab,c,  d'_c,ij = k w_c d_ij,c / sqrt(1 + (G R_c)^2),
+//   eta_ij = prod_c Phi(-d'_c,ij/2) / Phi(d'_c,ij/2),  p(j|i) = (1 - lapse) eta_ij / sum_m eta_im + lapse / n,
 // with k = sqrt(2) Phi^-1(0.75) and G the context noise, Phi through std::erf.
 inline std::vector<double> choice_row(const CueMatrix& cues, std::size_t presented, const DiscriminationConstants& k) {
   const double per_jnd = std::sqrt(2.0) * 0.6744897501960817;  // Phi^-1(0.75)
-  const double context = 0.08;
+  const double context = 0.09;
   const std::size_t n = cues.size();
   double range[kCueCount] = {};
   for (const auto& row : cues)
@@ -33,11 +33,11 @@ inline std::vector<double> choice_row(const CueMatrix& cues, std::size_t present
   std::vector<double> p(n);
   double total = 0.0;
   for (std::size_t j = 0; j < n; ++j) {
-    double sum = 0.0;
-    for (std::size_t c = 0; c < kCueCount; ++c)
-      sum += std::pow(per_jnd * k.cue_weight[c] * cues[presented][j][c] / std::sqrt(1.0 + std::pow(context * range[c], 2)), 2);
-    const double d = std::sqrt(sum);
-    p[j] = phi(-d / 2.0) / phi(d / 2.0);
+    p[j] = 1.0;
+    for (std::size_t c = 0; c < kCueCount; ++c) {
+      const double d = per_jnd * k.cue_weight[c] * cues[presented][j][c] / std::sqrt(1.0 + std::pow(context * range[c], 2));
+      p[j] *= phi(-d / 2.0) / phi(d / 2.0);
+    }
     total += p[j];
   }
   for (double& x : p) x = (1.0 - k.lapse_rate) * x / total + k.lapse_rate / static_cast<double>(n);
