@@ -34,9 +34,9 @@ struct HttpRoutes {
   std::function<std::optional<HttpReply>(const HttpRequest&)> refuse;
   // On the network thread, once the whole request is read (its body too), before it waits for
   // anything (a worker, its client's turn, a lock behind it): a reply at once, or nothing to run
-  // respond(). For the refusals that cost no file and no lock (the study's rate limit, a wrong
-  // key), so that a client flooding requests behind its own slow one is refused at once instead of
-  // queueing. Empty: nothing is refused here. One that throws answers 500, as respond() does.
+  // respond(). For the refusals that cost no file and no participant's lock (the study's rate
+  // limit, a wrong key), so that a client flooding requests behind its own slow one is refused at
+  // once instead of queueing. Empty: nothing is refused here. One that throws answers 500, as respond() does.
   std::function<std::optional<HttpReply>(const HttpRequest&)> screen;
   // On a worker: the reply. A reply with event_stream opened a stream of `events` (its cursor); one
   // with wait_for_room waits its turn to run again (retry_room_waiters()), or is sent after the wait.

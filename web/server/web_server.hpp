@@ -53,8 +53,9 @@ struct WebServerOptions {
   // Receives each log line (without its newline); by default they go to stderr.
   std::function<void(const std::string&)> log_line;
   ApiHandler api;                           // empty: no /api/ (plain vimg serve)
-  // The API's cheap refusals (no file, no lock: a wrong key, the rate limit), run on the network
-  // thread as each request to the api arrives: a reply at once, or nothing to pass it to `api`.
+  // The API's cheap refusals (no file, no participant's lock: a wrong key, the rate limit), run on
+  // the network thread as each request to the api arrives: a reply at once, or nothing to pass it
+  // to `api`.
   std::function<std::optional<ApiReply>(const ApiRequest&)> api_screen;
   std::vector<std::string> api_post_paths;  // the only paths a POST may reach
   std::filesystem::path tls_cert_pem, tls_key_pem;  // both empty: plain HTTP

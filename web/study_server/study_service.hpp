@@ -19,9 +19,10 @@
 // /api/state, write nothing and make no file. A participant whose trial file exists but cannot be
 // opened (held by vimg-player, say, or broken) gets 503 on the state and the answer. Other methods
 // are 405 (POST only on /api/answer, GET and HEAD elsewhere); any other path under /api/ is 404.
-// Every refusal up to the rate limit's 429 costs no file and no lock: the server makes them on its
-// network thread as the request arrives (screen()), before it waits for anything (a worker, the
-// participant's turn, the participant's answer being synced); the rest is respond()'s, on a worker.
+// Every refusal up to the rate limit's 429 costs no file and no participant's lock: the server
+// makes them on its network thread as the request arrives (screen()), before it waits for anything
+// (a worker, the participant's turn, the participant's answer being synced); the rest is
+// respond()'s, on a worker.
 // Threads: screen() on the network thread, respond() on the server's workers at once.
 #include <chrono>
 #include <filesystem>
@@ -45,8 +46,9 @@ class StudyService {
   StudyService(MatchingStudy study, std::vector<std::vector<std::string>> image_names, std::filesystem::path results_dir,
                StudyKeys keys, std::function<void(const std::string&)> log_line = {});
 
-  // The refusals that cost no file and no lock, in the order above, the rate limit's 429 last (it
-  // takes one answer from the participant's bucket): a reply, or nothing to go on to respond().
+  // The refusals that cost no file and no participant's lock, in the order above, the rate
+  // limit's 429 last (it takes one answer from the participant's bucket): a reply, or nothing to go
+  // on to respond().
   std::optional<ApiReply> screen(const ApiRequest& request);
   // The reply to a request screen() let through (its checks are made again, the rate's aside).
   ApiReply respond(const ApiRequest& request);
@@ -62,7 +64,8 @@ class StudyService {
   static std::vector<std::string> post_paths() { return {"/api/answer"}; }
 
  private:
-  // What a request asks once the checks that cost no file and no lock have passed, or its refusal.
+  // What a request asks once the checks that cost no file and no participant's lock have passed,
+  // or its refusal.
   struct Checked {
     std::optional<ApiReply> refused;
     std::optional<ParsedAnswer> answer;  // POST /api/answer
