@@ -32,6 +32,35 @@ void sparse_file(const fs::path& path, std::size_t bytes) {
   fs::resize_file(path, bytes);
 }
 
+// A slow reader of a.bin holding its 24 of the 32 MiB (its head read, then nothing), and `count`
+// readers of b.bin sent after it, each of which finds the budget full.
+struct Crowd {
+  std::unique_ptr<RawConnection> slow;
+  std::vector<std::unique_ptr<RawConnection>> waiting;
+};
+
+Crowd crowd_behind_a_slow_reader(int port, int count) {
+  Crowd crowd;
+  crowd.slow = std::make_unique<RawConnection>(port);
+  EXPECT_TRUE(crowd.slow->send_all("GET /a.bin HTTP/1.1\r\nHost: localhost\r\n\r\n"));
+  EXPECT_TRUE(crowd.slow->read_until("\r\n\r\n"));
+  for (int i = 0; i < count; ++i) {
+    crowd.waiting.push_back(std::make_unique<RawConnection>(port));
+    EXPECT_TRUE(crowd.waiting.back()->send_all("GET /b.bin HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"));
+  }
+  return crowd;
+}
+
+// Every waiting reader gets b.bin whole.
+void expect_each_served_whole(const std::vector<std::unique_ptr<RawConnection>>& waiting) {
+  for (const auto& connection : waiting) {
+    ASSERT_TRUE(connection->read_to_end());
+    const HttpResponse reply = parse_response(connection->received());
+    EXPECT_EQ(reply.status, 200);
+    EXPECT_EQ(reply.body.size(), kFileBytes);
+  }
+}
+
 // 20 readers of one 24 MiB file that never read hold one copy (24 MiB, not 480); another file
 // that would pass the budget gets 503 with Retry-After (no wait for room here); a whole reader of the first is served
 // from the shared copy; once the slow readers have gone the copy is freed and the other file is
@@ -79,14 +108,8 @@ TEST_F(ReplyBudget, RequestsThatFindTheBudgetFullAreServedOnceRoomIsFreed) {
     options.limits.reply_budget_bytes = kBudgetBytes;
     options.limits.reply_budget_wait = kHangBound;
   });
-  auto slow = std::make_unique<RawConnection>(port());
-  ASSERT_TRUE(slow->send_all("GET /a.bin HTTP/1.1\r\nHost: localhost\r\n\r\n"));
-  ASSERT_TRUE(slow->read_until("\r\n\r\n"));
-  std::vector<std::unique_ptr<RawConnection>> waiting;
-  for (int i = 0; i < kWaiting; ++i) {
-    waiting.push_back(std::make_unique<RawConnection>(port()));
-    ASSERT_TRUE(waiting.back()->send_all("GET /b.bin HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"));
-  }
+  auto [slow, waiting] = crowd_behind_a_slow_reader(port(), kWaiting);
+  if (HasFailure()) return;
   ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == kWaiting; })) << server.counts().waiting_for_room;
   EXPECT_EQ(server.reply_bytes_held(), kFileBytes) << "a request waiting for room holds none";
   EXPECT_EQ(exchange(port(), "GET", "/index.html").status, 200) << "the waits hold no worker";
@@ -95,12 +118,7 @@ TEST_F(ReplyBudget, RequestsThatFindTheBudgetFullAreServedOnceRoomIsFreed) {
     EXPECT_EQ(::recv(connection->fd(), &byte, 1, MSG_DONTWAIT), -1) << "answered while waiting for room";
   }
   slow.reset();  // it closes: its write fails, the copy of a.bin is freed
-  for (auto& connection : waiting) {
-    ASSERT_TRUE(connection->read_to_end());
-    const HttpResponse reply = parse_response(connection->received());
-    EXPECT_EQ(reply.status, 200);
-    EXPECT_EQ(reply.body.size(), kFileBytes);
-  }
+  expect_each_served_whole(waiting);
   EXPECT_EQ(server.counts().waiting_for_room, 0);
   EXPECT_EQ(server.counts().room_waits_expired, 0);
 }
@@ -120,14 +138,8 @@ TEST_F(ReplyBudget, AChangeRetriesTheFirstWaiterOnlyWhenItFindsNoRoom) {
     options.limits.reply_budget_bytes = kBudgetBytes;
     options.limits.reply_budget_wait = kHangBound;
   });
-  auto slow = std::make_unique<RawConnection>(port());
-  ASSERT_TRUE(slow->send_all("GET /a.bin HTTP/1.1\r\nHost: localhost\r\n\r\n"));
-  ASSERT_TRUE(slow->read_until("\r\n\r\n"));
-  std::vector<std::unique_ptr<RawConnection>> waiting;
-  for (int i = 0; i < kWaiting; ++i) {
-    waiting.push_back(std::make_unique<RawConnection>(port()));
-    ASSERT_TRUE(waiting.back()->send_all("GET /b.bin HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"));
-  }
+  auto [slow, waiting] = crowd_behind_a_slow_reader(port(), kWaiting);
+  if (HasFailure()) return;
   ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == kWaiting; }));
   const long routes_before = server.counts().routes_queued;
   EXPECT_EQ(exchange(port(), "GET", "/index.html").status, 200);
@@ -138,12 +150,7 @@ TEST_F(ReplyBudget, AChangeRetriesTheFirstWaiterOnlyWhenItFindsNoRoom) {
   const long retries = server.counts().routes_queued - routes_before - 2;
   EXPECT_LE(retries, 2) << "routes run again for " << kWaiting << " waiters after two changes";
   slow.reset();  // room: every waiter is served in turn
-  for (auto& connection : waiting) {
-    ASSERT_TRUE(connection->read_to_end());
-    const HttpResponse reply = parse_response(connection->received());
-    EXPECT_EQ(reply.status, 200);
-    EXPECT_EQ(reply.body.size(), kFileBytes);
-  }
+  expect_each_served_whole(waiting);
   EXPECT_EQ(server.counts().waiting_for_room, 0);
 }
 
