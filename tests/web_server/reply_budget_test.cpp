@@ -21,8 +21,6 @@
 namespace vimg::test {
 namespace {
 
-using ReplyBudget = SiteFixture;
-
 constexpr std::size_t kFileBytes = std::size_t{24} << 20;
 constexpr std::size_t kBudgetBytes = std::size_t{32} << 20;
 constexpr int kSlowReaders = 20;
@@ -60,6 +58,24 @@ void expect_each_served_whole(const std::vector<std::unique_ptr<RawConnection>>&
     EXPECT_EQ(reply.body.size(), kFileBytes);
   }
 }
+
+constexpr int kWaiting = web::kRouteWorkerThreads * 2;
+
+class ReplyBudget : public SiteFixture {
+ protected:
+  // a.bin and b.bin of 24 MiB, a server whose budget is 32 MiB and whose wait for room outlasts
+  // the test, and kWaiting readers of b.bin sent behind a slow reader of a.bin.
+  WebServer& start_crowded(Crowd& crowd) {
+    sparse_file(site_ / "a.bin", kFileBytes);
+    sparse_file(site_ / "b.bin", kFileBytes);
+    WebServer& server = start_server([](WebServerOptions& options) {
+      options.limits.reply_budget_bytes = kBudgetBytes;
+      options.limits.reply_budget_wait = kHangBound;
+    });
+    crowd = crowd_behind_a_slow_reader(port(), kWaiting);
+    return server;
+  }
+};
 
 // 20 readers of one 24 MiB file that never read hold one copy (24 MiB, not 480); another file
 // that would pass the budget gets 503 with Retry-After (no wait for room here); a whole reader of the first is served
@@ -101,15 +117,9 @@ TEST_F(ReplyBudget, OneCopyPerFileWithinTheBudget) {
 // at once, so the server never counted it waiting) with serve_file's wait_for_room left false, as
 // before.
 TEST_F(ReplyBudget, RequestsThatFindTheBudgetFullAreServedOnceRoomIsFreed) {
-  constexpr int kWaiting = web::kRouteWorkerThreads * 2;
-  sparse_file(site_ / "a.bin", kFileBytes);
-  sparse_file(site_ / "b.bin", kFileBytes);
-  WebServer& server = start_server([](WebServerOptions& options) {
-    options.limits.reply_budget_bytes = kBudgetBytes;
-    options.limits.reply_budget_wait = kHangBound;
-  });
-  auto [slow, waiting] = crowd_behind_a_slow_reader(port(), kWaiting);
-  if (HasFailure()) return;
+  Crowd crowd;
+  WebServer& server = start_crowded(crowd);
+  auto& [slow, waiting] = crowd;
   ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == kWaiting; })) << server.counts().waiting_for_room;
   EXPECT_EQ(server.reply_bytes_held(), kFileBytes) << "a request waiting for room holds none";
   EXPECT_EQ(exchange(port(), "GET", "/index.html").status, 200) << "the waits hold no worker";
@@ -131,15 +141,9 @@ TEST_F(ReplyBudget, RequestsThatFindTheBudgetFullAreServedOnceRoomIsFreed) {
 // (16 more routes than the 2 requests) with EngineState::wake_room_waiters retrying every waiter,
 // as before.
 TEST_F(ReplyBudget, AChangeRetriesTheFirstWaiterOnlyWhenItFindsNoRoom) {
-  constexpr int kWaiting = web::kRouteWorkerThreads * 2;
-  sparse_file(site_ / "a.bin", kFileBytes);
-  sparse_file(site_ / "b.bin", kFileBytes);
-  WebServer& server = start_server([](WebServerOptions& options) {
-    options.limits.reply_budget_bytes = kBudgetBytes;
-    options.limits.reply_budget_wait = kHangBound;
-  });
-  auto [slow, waiting] = crowd_behind_a_slow_reader(port(), kWaiting);
-  if (HasFailure()) return;
+  Crowd crowd;
+  WebServer& server = start_crowded(crowd);
+  auto& [slow, waiting] = crowd;
   ASSERT_TRUE(wait_for([&] { return server.counts().waiting_for_room == kWaiting; }));
   const long routes_before = server.counts().routes_queued;
   EXPECT_EQ(exchange(port(), "GET", "/index.html").status, 200);
