@@ -12,6 +12,7 @@
 #include "primitives/perception/identification_choice.hpp"
 #include "primitives/perception/predicted_confusion.hpp"
 #include "primitives/perception/stsim.hpp"
+#include "primitives/random/splitmix64.hpp"
 
 namespace vimg {
 namespace {
@@ -26,12 +27,11 @@ std::vector<double> make_signal(std::size_t i) {
   std::vector<double> x(static_cast<std::size_t>(kSeconds * kRateHz));
   const double texture_hz = 40.0 + 15.0 * static_cast<double>(i);
   const double gain = 0.2 + 0.04 * static_cast<double>(i);
-  std::uint64_t state = 0x9E3779B97F4A7C15ULL * (i + 1);
+  SplitMix64 random(i);
   for (std::size_t n = 0; n < x.size(); ++n) {
     const double t = static_cast<double>(n) / kRateHz;
     const double phase = std::fmod(t, 0.8);
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    const double noise = 0.01 * (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5);
+    const double noise = 0.01 * (random.unit() - 0.5);
     double v = phase < 0.5 ? gain * std::sin(2.0 * std::numbers::pi * texture_hz * t) : 0.0;
     if (i % 3 == 0 && phase > 0.6 && phase < 0.63) v += std::sin(2.0 * std::numbers::pi * 175.0 * (phase - 0.6));
     x[n] = v + noise;

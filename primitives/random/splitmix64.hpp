@@ -11,7 +11,8 @@
 //   below(n)   uniform in [0, n), n > 0, without modulo bias (outputs under 2^64 mod n are drawn again)
 //
 // Users: the trial order (study/trial_plan.cpp), the masking noise (apps/vimg-player/study_noise.cpp),
-// the test signals (tests/perception/fixture_signals.cpp), the fit's simulated participants
+// the test signals (tests/perception/fixture_signals.cpp, discrimination_model_test.cpp and
+// bench/perception_bench.cpp's), the fit's simulated participants
 // (tests/study_fit/fit_simulation.hpp) and its bootstrap (study/fit_bootstrap.cpp).
 //
 // Threads: a generator is a value; one per thread.

@@ -9,6 +9,7 @@
 #include "primitives/actuator/actuator_model.hpp"
 #include "primitives/perception/discrimination_choice.hpp"
 #include "primitives/perception/predicted_confusion.hpp"
+#include "primitives/random/splitmix64.hpp"
 #include "texture_signals.hpp"
 
 namespace vimg {
@@ -36,11 +37,8 @@ std::vector<double> through_lra(const std::vector<double>& drive) {
 
 // Seeded noise bursts of random level and length: signals with nothing in common by construction.
 std::vector<double> random_signal(std::uint64_t seed) {
-  std::uint64_t state = 0x9E3779B97F4A7C15ULL * (seed + 1);
-  const auto next = [&state] {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return static_cast<double>(state >> 11) / 9007199254740992.0;
-  };
+  SplitMix64 random(seed);
+  const auto next = [&random] { return random.unit(); };
   std::vector<double> x(static_cast<std::size_t>((0.5 + 2.0 * next()) * test::kRateHz), 0.0);
   const double gain = std::pow(10.0, -2.0 * next());
   const double frequency_hz = 20.0 + 400.0 * next();
