@@ -1,5 +1,5 @@
 #pragma once
-// Absolute identification of one image among the n of a set (docs/perception.md, "Identification"):
+// Absolute identification of one image among the n of a set (docs/identification.md):
 // what the matching test asks of people and what `vimg compare` and `vimg separate` predict. The
 // cues of each pair (discrimination_cues.hpp, in JNDs) are the same as for discrimination; what
 // differs is the noise: besides the sensory noise that sets the JND, remembering where an image
@@ -34,7 +34,7 @@
 namespace vimg {
 
 inline constexpr double kDPrimePerJnd = 0.9538725524;  // sqrt(2) * Phi^-1(0.75)
-// Reasoned from the published ranges (docs/perception.md says how): one-dimensional sets of 3 to
+// Reasoned from the published ranges (docs/identification.md says how): one-dimensional sets of 3 to
 // 12 images transfer 1.2-1.7 bits at any spacing, three-dimensional ones 4.5-4.9 bits.
 inline constexpr double kContextNoisePerDPrime = 0.09;
 

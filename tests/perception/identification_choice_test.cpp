@@ -80,7 +80,7 @@ TEST(Identification, RowsSumToOneIdenticalImagesSplitAndTheLapseIsUniform) {
 
 // Rabinowitz, Houtsma, Durlach & Delhorne (1987): one-dimensional vibrotactile sets transfer 1-2
 // bits, growing little beyond six members; three-dimensional sets 4-5 bits. (Calibration: the
-// context noise was set on these ranges; docs/perception.md.)
+// context noise was set on these ranges; docs/identification.md.)
 TEST(Identification, InformationAlongOneCueSaturatesAndIndependentCuesAdd) {
   for (std::size_t cue = 0; cue < kCueCount; ++cue) {
     std::vector<double> six_and_twelve;
@@ -142,7 +142,7 @@ TEST(Identification, OverAFullGridTheCuesInformationAdds) {
 // Where the product rule is not exact: a pair that differs on several cues near threshold is told
 // apart better than the nearest-choice observer of that pair could (whose d' is Euclidean over the
 // cues): one JND on each of two cues, 17.8 % confused against 25.1 %. The same observer is exact
-// for a full grid (above); no Luce rule is exact for both (docs/perception.md, "Identification").
+// for a full grid (above); no Luce rule is exact for both (docs/identification.md).
 // Pinned: fails when the rule changes, so that the docs are redone.
 TEST(Identification, APairThatDiffersOnTwoCuesIsToldApartBetterThanTheNearestChoiceObserver) {
   CueDistances both{};

@@ -11,7 +11,7 @@
 //   [out of sample]  nothing was set on Azadi & Jones's nine tactons, nor on the segregation of
 //                    rhythms (Jurado et al. 2021).
 // The stimuli's values are ours: the sources' abstracts give the dimensions, not the values, and
-// their full texts were not found (docs/perception.md, "Identification of rendered sets").
+// their full texts were not found (docs/identification.md, "Identification of rendered sets").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -235,7 +235,7 @@ double sampled_it_bits(const PerceptionMatrix& p, int presentations) {
 }
 
 // The model identifies our nine tactons better than Azadi & Jones's participants identified
-// theirs: pinned as a deviation (docs/perception.md). Their values are not in the abstract (nor in
+// theirs: pinned as a deviation (docs/identification.md). Their values are not in the abstract (nor in
 // any text found); ours are 4 frequency JNDs and 5 level JNDs apart with three rhythms each 12 JNDs
 // or more apart, where the model sees little context noise (few values per cue) and multiplies the
 // cues' confusabilities (every two tactons differ on two cues or three).
@@ -250,7 +250,7 @@ TEST(IdentificationConformance, NineTactonsOverThreeDimensionsAreIdentifiedBette
   report("9 tactons: % correct", 9, correct, pc);
   report("9 tactons: bits from 72 trials", 9, sampled, bits);
   EXPECT_GT(correct, pc.high) << kOutOfSample << "(pinned deviation) " << correct << " % correct: now within " << pc.low << "-"
-                              << pc.high << ", redo docs/perception.md";
+                              << pc.high << ", redo docs/identification.md";
   EXPECT_GT(sampled, bits.high) << kOutOfSample << "(pinned deviation) " << sampled << " bits estimated from 72 trials";
   EXPECT_LT(correct, 99.9) << kOutOfSample << "(pinned deviation) " << correct << " % correct";
 }
