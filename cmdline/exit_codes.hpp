@@ -1,5 +1,5 @@
 #pragma once
-// The exit codes every program of the project uses (docs/format.md, the command contract):
+// The exit codes every program of the project uses (docs/format-command.md, the command contract):
 //   0    success, and --help / --version
 //   1    bad input (a file that does not read, with FILE:LINE: error: ...)
 //   2    a usage error

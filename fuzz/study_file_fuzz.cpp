@@ -1,5 +1,5 @@
 // Fuzzes both study-file readers (storage/study/study_file.hpp) on the same bytes: any input gives
-// located errors or a study within every rule and limit of docs/format.md, never a crash; every
+// located errors or a study within every rule and limit of docs/format-studies.md, never a crash; every
 // message is printable and bounded. The matching reader resolves images in a folder made once
 // with a.vimg, b.vimg, c.vimg, dot.vimg and sub/line.vimg (any other name is a located error).
 #include <stdlib.h>

@@ -1,5 +1,5 @@
 // Fuzzes both trial-file readers (storage/study/trial_table.hpp) on the same bytes: any input gives
-// located errors or rows within the rules of docs/format.md "Trial files", never a crash; every
+// located errors or rows within the rules of docs/format-studies.md "Trial files", never a crash; every
 // message is printable and bounded; and the rows read, written again with to_cells, read back to
 // exactly the same cells (the report and the log agree on every file).
 #include <cstddef>

@@ -1,5 +1,5 @@
 #pragma once
-// The picture of a vibroimage that a PNG shows (spec section 2, docs/format.md "PNG rendering"):
+// The picture of a vibroimage that a PNG shows (spec section 2, docs/format-png.md "PNG rendering"):
 // white canvas, anti-aliased primitives in paint order. Dots are dark filled discs, lines are
 // stroked capsules coloured by frequency with a ripple whose wavelength shrinks as frequency
 // grows, surfaces are filled with stripes of their pattern at their period.

@@ -1,6 +1,6 @@
 #pragma once
 // Closed rings (outlines) to the one polygon a SURFACE holds. A SURFACE polygon is filled by the
-// even-odd rule (docs/format.md), so several rings, holes included, become one point list: each
+// even-odd rule (docs/format-png.md), so several rings, holes included, become one point list: each
 // further ring is joined to the first by a bridge, an edge walked there and back (r_i -> h_0 ...
 // h_0 -> r_i). The two bridge edges coincide, so every ray crosses both or neither and the
 // even-odd fill is exactly that of the separate rings. Pure: no I/O.

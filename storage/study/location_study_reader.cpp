@@ -1,4 +1,4 @@
-// The location study file (docs/format.md, "Location study file"): load_location_study and
+// The location study file (docs/format-studies.md, "Location study file"): load_location_study and
 // parse_location_study of storage/study/study_file.hpp.
 #include <array>
 

@@ -1,4 +1,4 @@
-// The matching study file (docs/format.md, "Matching study file"): load_matching_study and
+// The matching study file (docs/format-studies.md, "Matching study file"): load_matching_study and
 // parse_matching_study of storage/study/study_file.hpp.
 #include <map>
 

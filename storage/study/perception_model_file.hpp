@@ -1,6 +1,6 @@
 #pragma once
 // MODEL.json: the constants of the identification model that `vimg study fit` wrote and
-// `vimg compare --model` and `vimg separate --model` read (docs/format.md A9). Versioned JSON:
+// `vimg compare --model` and `vimg separate --model` read (docs/format-model.md A9). Versioned JSON:
 //
 //   {
 //     "format": "vimg-perception-model",

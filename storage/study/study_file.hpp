@@ -1,5 +1,5 @@
 #pragma once
-// Study files (XML, docs/format.md "Matching study file" and "Location study file"): what a study
+// Study files (XML, docs/format-studies.md "Matching study file" and "Location study file"): what a study
 // runner needs before its first trial. Read like every XML file of the project (the structure pass
 // before tinyxml2, its wording for malformed XML, the limits of storage/limits.hpp); every problem
 // is `FILE:LINE: error: ...`. Unlike an image's, an unknown element or attribute is an error: a

@@ -1,5 +1,5 @@
 #pragma once
-// Trial files (CSV, docs/format.md "Trial files"): one schema per study kind, a row per trial, written
+// Trial files (CSV, docs/format-studies.md "Trial files"): one schema per study kind, a row per trial, written
 // one synced line at a time by storage/study/trial_log.hpp and read whole by the report.
 //
 //   matching: participant,set,trial,presented,chosen,correct,rub_s,response_s,path_mm,time_utc

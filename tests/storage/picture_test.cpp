@@ -1,4 +1,4 @@
-// The PNG picture (docs/format.md "PNG"): polygons filled by scanlines in time that grows with
+// The PNG picture (docs/format-png.md "PNG"): polygons filled by scanlines in time that grows with
 // points plus rows (counted, never timed), with the anti-aliasing and even-odd rule of the other
 // shapes, and any finite coordinates drawn without overflow.
 #include <gtest/gtest.h>
@@ -187,7 +187,7 @@ TEST(Picture, AnInnerRunFarOutsideTheRowIsClampedToIt) {
   EXPECT_GT(i0, i1) << "none";
 }
 
-// One look (docs/format.md, storage/palette.hpp): a surface's stripes run vertically on every
+// One look (docs/format-png.md, storage/palette.hpp): a surface's stripes run vertically on every
 // shape; its opacity at x follows palette::surface_opacity, so a fully opaque stripe is exactly
 // the palette's surface colour and the picture repeats with the period along x, never along y.
 TEST(Picture, SurfaceStripesRunVerticallyOnEveryShape) {

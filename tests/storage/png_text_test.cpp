@@ -1,4 +1,4 @@
-// The `vibroimage` text chunk of a PNG (docs/format.md "PNG"): tEXt, zTXt and iTXt (compressed or
+// The `vibroimage` text chunk of a PNG (docs/format-png.md "PNG"): tEXt, zTXt and iTXt (compressed or
 // not) are read; a damaged chunk, a text that inflates past the XML size limit and a second
 // vibroimage chunk are each reported for what they are, never as "no vibroimage chunk".
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Study files (storage/study/study_file.hpp, docs/format.md "Matching study file" and "Location
+// Study files (storage/study/study_file.hpp, docs/format-studies.md "Matching study file" and "Location
 // study file"): good files give the study, every problem is `FILE:LINE: error: ...` at its line.
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -1,4 +1,4 @@
-// Trial files (storage/study/trial_table.hpp, docs/format.md "Trial files"): rows to cells and back
+// Trial files (storage/study/trial_table.hpp, docs/format-studies.md "Trial files"): rows to cells and back
 // exactly, and every problem of a file at its line.
 #include <gtest/gtest.h>
 

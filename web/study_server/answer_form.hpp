@@ -2,7 +2,7 @@
 // A page's answer, as the server reads it before anything is written (docs/matching-test.md, "The matching test in the
 // browser"). The body is form text (web/study_server/form_text.hpp) with exactly these fields:
 //   participant, trial (1..N), presented, chosen (image stems of the trial's set), rub_s,
-//   response_s, path_mm (decimal numbers, docs/format.md "Trial files")
+//   response_s, path_mm (decimal numbers, docs/format-studies.md "Trial files")
 // and, all or none of them, the device the page runs on (written once per participant):
 //   device_user_agent, device_screen_width_mm, device_screen_height_mm, device_audio_rate_hz,
 //   device_output_latency_s
