@@ -15,7 +15,7 @@ ForceArgsResult parse_force_args(int argc, const char* const* argv) {
       "vimg-force: feel a volume scene with a force device. Runs the scene's haptic loop at the scene's rate "
       "(device rate) through the safety stack (start-up gate, soft wall, clamp, slew limit, stale-input and "
       "overrun watchdogs) until Ctrl-C, SIGTERM or --seconds. With --study instead of a scene, runs the volume "
-      "paper's location study for one participant (docs/volume.md, \"Location study\").");
+      "paper's location study for one participant (docs/volume-location-study.md, \"Location study\").");
   cmdline::configure(app, "vimg-force");
   auto* scene = app.add_option("SCENE", a.scene_path, "a volume scene (.vscene.xml); not with --study");
   auto* outside = app.add_flag("--allow-outside-files", a.allow_outside_files,
@@ -45,7 +45,7 @@ ForceArgsResult parse_force_args(int argc, const char* const* argv) {
                  "without, the loop runs at normal priority)")
       ->check(CLI::Range(0, 99));
   auto* study = app.add_option("--study", a.study_file,
-                               "run this location study (<locationStudy>, docs/format.md) instead of a scene: one trial after "
+                               "run this location study (<locationStudy>, docs/format-studies.md) instead of a scene: one trial after "
                                "another, each a new data set; button 0 (or Enter on the terminal) marks");
   auto* participant =
       app.add_option("--participant", a.participant, "with --study: the participant's ID ([A-Za-z0-9_-], 1 to 64 characters)");

@@ -28,7 +28,7 @@ namespace vimg::force_app {
 namespace {
 
 constexpr const char* kTrialFileSuffix = "location";
-// Device faults in a row, without a mark in between, that end the study (docs/volume.md, "Location
+// Device faults in a row, without a mark in between, that end the study (docs/volume-location-study.md, "Location
 // study"): a trial that faults this often will not go through on this device today.
 constexpr int kMaxFaultsInARow = 3;
 

@@ -1,6 +1,6 @@
 #pragma once
 // vimg-force --study: the volume paper's location study (section 5) for one participant
-// (docs/volume.md, "Location study"):
+// (docs/volume-location-study.md, "Location study"):
 //
 //   load the study file and plan the participant's trials (study/trial_plan.hpp: the metaphors'
 //   order and each trial's data seed); open the device (HID: once; the simulator: afresh in every

@@ -1,4 +1,4 @@
-// vimg-force: feel a volume scene with a force device (docs/volume.md, "Feel it with a force
+// vimg-force: feel a volume scene with a force device (docs/volume-force-device.md, "Feel it with a force
 // device"), or run the volume paper's location study on it ("Location study").
 //   vimg-force SCENE --device sim|hid[:PATH] [--path P.csv] [--seconds S] [--log F.csv]
 //              [--telemetry T.json] [--realtime-priority N]

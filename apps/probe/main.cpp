@@ -1,5 +1,5 @@
 // vimg-probe: explore a volume scene with the mouse, or watch the scene's haptic loop run on a
-// force device (docs/volume.md, "Virtual probe"; see --help).
+// force device (docs/volume-probe.md, "Virtual probe"; see --help).
 //   vimg-probe SCENE [--frames N] [--move X_MM,Z_MM] [--screenshot OUT.bmp]
 //   vimg-probe SCENE --device sim|hid[:PATH] [--path P.csv] [--frames N] [--screenshot OUT.bmp]
 // The window shows the slice y = const of the scene's first scalar data (x across, z down), the

@@ -5,7 +5,7 @@
 //     with protocol version 1.
 // When none answers, `report` says what was found and why each did not answer (vendor:product,
 // path, product string, reason), or that no HID device is visible at all, pointing to the udev
-// rule in docs/volume.md. The search stops trying new devices once time_budget_s has passed
+// rule in docs/volume-force-device.md. The search stops trying new devices once time_budget_s has passed
 // (each try is one open and one feature report), so the answer comes within a few seconds.
 //
 // Threads: a control thread (allocates, may block on the devices).

@@ -1,5 +1,5 @@
 #pragma once
-// The open HID report protocol for do-it-yourself force devices (docs/volume.md, "HID force
+// The open HID report protocol for do-it-yourself force devices (docs/volume-force-device.md, "HID force
 // protocol"). All multi-byte fields are little-endian; byte 0 of every report is its report id.
 //
 //   Feature report 0x01, device info (16 bytes, device -> host, read once at open):

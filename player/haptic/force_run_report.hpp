@@ -1,5 +1,5 @@
 #pragma once
-// The summary of one run of the haptic loop (vimg-force --telemetry, docs/volume.md): achieved
+// The summary of one run of the haptic loop (vimg-force --telemetry, docs/volume-force-device.md): achieved
 // and target rate, lateness p50/p99/max (LoopTelemetry's definitions), overruns, skips, cycles,
 // the largest force sent against the clamp, clamp hits, dropped log rows, why the run ended and
 // the device's state. As JSON: one object, numbers locale-independent.

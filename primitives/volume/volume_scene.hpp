@@ -1,5 +1,5 @@
 #pragma once
-// A volume scene (docs/volume.md): which data it shows, how the kinaesthetic part renders it,
+// A volume scene (docs/volume-data.md): which data it shows, how the kinaesthetic part renders it,
 // which vibrotactile shaders ride on top with their transfer functions, and the device profile.
 // Plain data in file units (mm, ms, N, Hz); storage reads and writes it.
 #include <optional>

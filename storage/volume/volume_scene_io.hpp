@@ -1,5 +1,5 @@
 #pragma once
-// Volume scene files (XML, docs/volume.md) and loading a scene with its NRRD data.
+// Volume scene files (XML, docs/volume-data.md) and loading a scene with its NRRD data.
 #include <filesystem>
 #include <map>
 #include <memory>

@@ -1,4 +1,4 @@
-// vimg-force itself, over a fresh study data set: the acceptance runs of docs/volume.md ("Feel it
+// vimg-force itself, over a fresh study data set: the acceptance runs of docs/volume-force-device.md ("Feel it
 // with a force device") and the project's exit-status convention.
 #include <fcntl.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// vimg-force --study on the simulated device when the device faults during a trial (docs/volume.md,
+// vimg-force --study on the simulated device when the device faults during a trial (docs/volume-location-study.md,
 // "Location study", "Signals and errors"): the trial ends unrecorded with the device at rest and runs
 // again from its start, so the trial file holds every trial once; a device that faults on every
 // attempt ends the study after three faults in a row (exit 1, the finished trials kept, the next run

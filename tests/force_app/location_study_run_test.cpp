@@ -1,4 +1,4 @@
-// vimg-force --study, the program itself on the simulated device (docs/volume.md, "Location
+// vimg-force --study, the program itself on the simulated device (docs/volume-location-study.md, "Location
 // study"): the shipped example end to end (14 rows whose targets follow from the seeds, marks at the
 // hand's place at the scripted times, exact errors, nothing on the terminal that gives the target,
 // the error or the mark away), SIGKILL in the middle and a rerun that continues, a finished
