@@ -1,4 +1,4 @@
-// `vimg serve IMAGE...|DIR [--port N] [--lan] [--tls CERT KEY] [--actuator P]` (docs/web.md,
+// `vimg serve IMAGE...|DIR [--port N] [--lan] [--tls CERT KEY] [--actuator P]` (docs/web-serving.md,
 // "Serving"): builds the site of the images into a private temporary folder (or takes DIR, a site `vimg web` wrote),
 // serves it read-only (web/server/web_server.hpp) and prints its URL; each save of an image is
 // compiled again and pushed to the open pages. SIGINT/SIGTERM stop it: the temporary site is

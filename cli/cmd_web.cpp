@@ -1,4 +1,4 @@
-// `vimg web IMAGE... --out DIR [--actuator P]` (docs/web.md): writes a self-contained site that
+// `vimg web IMAGE... --out DIR [--actuator P]` (docs/web-site.md): writes a self-contained site that
 // plays the images in a browser (the page, the WebAssembly renderer, each image as a .vsc).
 #include <cstdio>
 #include <memory>

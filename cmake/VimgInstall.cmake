@@ -18,7 +18,7 @@ foreach(sub ${VIMG_DATA_SUBDIRS})
     file(CREATE_LINK ${PROJECT_SOURCE_DIR}/assets/${sub} ${PROJECT_BINARY_DIR}/share/vibroimage/${sub} SYMBOLIC)
   endif()
 endforeach()
-# The web player (page, vimg.js, vimg.wasm) is the `web` preset's output (docs/web.md); the link may
+# The web player (page, vimg.js, vimg.wasm) is the `web` preset's output (docs/web-building.md); the link may
 # dangle until that build has run, and `vimg web` says how to build it.
 if(DEFINED VIMG_WEB_ASSETS_DIR AND NOT IS_SYMLINK ${PROJECT_BINARY_DIR}/share/vibroimage/web)
   file(CREATE_LINK ${VIMG_WEB_ASSETS_DIR} ${PROJECT_BINARY_DIR}/share/vibroimage/web SYMBOLIC)

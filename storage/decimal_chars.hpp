@@ -1,6 +1,6 @@
 #pragma once
 // std::from_chars / std::to_chars for double, in one place for every build. Natively they are the
-// standard functions. The WebAssembly build (Emscripten 3.1.6, docs/web.md) ships a libc++ whose
+// standard functions. The WebAssembly build (Emscripten 3.1.6, docs/web-building.md) ships a libc++ whose
 // floating-point from_chars/to_chars are deleted, so there they are written with strtod and
 // snprintf on exactly the text the standard functions would accept: an optional '-', digits, an
 // optional fraction and exponent (no leading spaces, no '+', no hexadecimal; "inf" and "nan" are not

@@ -1,5 +1,5 @@
 // `vimg serve --study` as a black box over raw sockets, for what the HTTP layer and the API decide
-// together (docs/web.md, "A study in the browser"): every method but GET and HEAD on the API's
+// together (docs/web-study.md, "A study in the browser"): every method but GET and HEAD on the API's
 // paths, and any but POST on the answer, is 405; the answer's bound on both sides (exactly
 // kMaxAnswerBodyBytes is recorded, one byte more is 413, as is a body beyond the server's own
 // bound) and checked before the key; the state and a link without a participant are 400. Nothing

@@ -1,4 +1,4 @@
-// The study API's rate limit (docs/web.md, "Connections") checked as a request arrives, before it
+// The study API's rate limit (docs/web-serving.md, "Connections") checked as a request arrives, before it
 // waits for anything: the real StudyService in a WebServer (StudyService::install), over raw
 // sockets, with a slow file layer: this program's fsync (which replaces the C library's for every
 // caller linked in, TrialLog among them) waits at a Gate (tests/web_server/stub_api.hpp) while the

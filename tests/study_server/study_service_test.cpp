@@ -3,7 +3,7 @@
 // never seen before; the first accepted trial makes the trial file; the device record follows the
 // row (a failed append leaves none); a trial file held by another program is 503; the requests
 // without a participant (400), the methods (405), the body's bound on both sides and the order of
-// the checks (docs/web.md, "A study in the browser"); the Origin of a page behind a TLS proxy. And
+// the checks (docs/web-study.md, "A study in the browser"); the Origin of a page behind a TLS proxy. And
 // the rate limit's bucket at given times.
 #include <gtest/gtest.h>
 
@@ -256,7 +256,7 @@ TEST_F(StudyServiceTest, TheBodysBoundHoldsOnBothSidesAndIsCheckedFirst) {
 
 TEST_F(StudyServiceTest, AnOriginIsThisServersHostOverHttpOrHttps) {
   web::StudyService api = service(study_);
-  // https with the request's Host: the page behind a TLS proxy that passes Host (docs/web.md).
+  // https with the request's Host: the page behind a TLS proxy that passes Host (docs/web-study.md).
   EXPECT_EQ(api.handle(post(key("p1"), good("p1", 1), "https://localhost")).status, 200);
   for (const char* origin : {"https://localhost:8443", "http://localhost:80", "https://evil.example", "https://localhost.evil.example",
                              "ftp://localhost", "localhost", "null", "HTTPS://localhost"}) {

@@ -1,4 +1,4 @@
-// The connection cap (docs/web.md, "Connections"), shrunk through HttpLimits to 4 so that a test
+// The connection cap (docs/web-serving.md, "Connections"), shrunk through HttpLimits to 4 so that a test
 // fills it (the default, 4000, is the same code with another number): one connection more is
 // answered 503 only once its request head has come (a 503 written before and the socket closed
 // with the request unread can be lost to the reset the kernel then sends), the 503 ends in an

@@ -1,4 +1,4 @@
-// The deadlines docs/web.md ("Connections") states, each at its documented size except the write
+// The deadlines docs/web-serving.md ("Connections") states, each at its documented size except the write
 // deadline (shrunk through HttpLimits: the full one needs a reply of several MB unread for 10 s
 // and more). A trickling client sends one byte every kTricklePeriod for far longer than the
 // deadline; the server must close it at the deadline counted from the start, however the bytes

@@ -1,4 +1,4 @@
-// /events (docs/web.md, "Serving"): an open page gets "event: image" with the image's name for each
+// /events (docs/web-serving.md, "Serving"): an open page gets "event: image" with the image's name for each
 // publish after it connected, and a save of a watched image (by rename, as editors and vimg save)
 // rewrites the site's copy first and then reaches the page. Waits are on the stream's bytes; the
 // socket's receive bound only ends a hang.

@@ -1,4 +1,4 @@
-// Idle and slow connections cost the server no worker (docs/web.md, "Serving"): while a few dozen
+// Idle and slow connections cost the server no worker (docs/web-serving.md, "Serving"): while a few dozen
 // sockets say nothing and a few dozen more send their headers a byte at a time (each reconnecting at
 // once when the server closes it, as a hostile client does), a participant's answers through the API
 // and a page's file are each confirmed within kPromptBound of being sent. A server that gives each

@@ -1,4 +1,4 @@
-// File replies' memory (docs/web.md, "Connections"): one copy per file, shared by every reply of
+// File replies' memory (docs/web-serving.md, "Connections"): one copy per file, shared by every reply of
 // it, a budget on what the copies hold at once (shrunk here to 32 MiB so that two 24 MiB sparse
 // files pass it; the default is kReplyBudgetBytes), and the wait for room of a request that finds
 // it full (its bound set per test; the default is kReplyBudgetWait). Readers that never read keep

@@ -1,4 +1,4 @@
-// How the server reads a request's framing (docs/web.md, "Connections"): a whole header over
+// How the server reads a request's framing (docs/web-serving.md, "Connections"): a whole header over
 // 16 KiB, a chunked body over the 4 KiB limit, Expect: 100-continue, pipelined requests, and the
 // framings a proxy could read otherwise (Content-Length with Transfer-Encoding, Content-Length
 // twice or as a list, a transfer coding other than chunked), each refused with 400. Each test says

@@ -1,4 +1,4 @@
-// The routes' queues and faults (docs/web.md, "Connections"), with the stub API of
+// The routes' queues and faults (docs/web-serving.md, "Connections"), with the stub API of
 // tests/web_server/stub_api.hpp. Each test says how it was seen to fail against a server broken
 // on purpose.
 #include <gtest/gtest.h>

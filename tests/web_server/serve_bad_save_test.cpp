@@ -1,4 +1,4 @@
-// `vimg serve IMAGE` when a save does not compile (docs/web.md, "Serving": "A save that does not
+// `vimg serve IMAGE` when a save does not compile (docs/web-serving.md, "Serving": "A save that does not
 // compile prints its FILE:LINE: error: lines and the pages keep the last good scene"): the errors
 // are printed, the site's .vsc is still the last good one, and no open page is told of a change
 // (a good save of another image, later in the same stream, is the first event the page gets); the

@@ -1,4 +1,4 @@
-// `vimg serve` and `vimg web` as processes (docs/web.md, "Serving"): the URL printed once the server
+// `vimg serve` and `vimg web` as processes (docs/web-serving.md, "Serving"): the URL printed once the server
 // listens; a save of an image (an atomic rename) reaches an open page as an "image" event after
 // the site's .vsc was rewritten (it is then the .vsc `vimg web` writes for the saved image);
 // SIGINT/SIGTERM after the URL end it with 130/143 and remove the temporary site; usage errors 2,

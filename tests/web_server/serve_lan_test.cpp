@@ -1,4 +1,4 @@
-// `vimg serve` and the address it listens on (docs/web.md, "Serving"): 127.0.0.1 only unless --lan
+// `vimg serve` and the address it listens on (docs/web-serving.md, "Serving"): 127.0.0.1 only unless --lan
 // (the kernel's own table of listening sockets, /proc/net/tcp, says which address the port is bound
 // to); with --lan every interface, the LAN URL (the first IPv4 address of an interface that is up
 // and not the loopback) and a QR code of that URL drawn in half blocks, which a camera reads as that
@@ -48,7 +48,7 @@ std::vector<std::string> listening_ipv4_addresses(int port) {
   return found;
 }
 
-// The first IPv4 address of an interface that is up and not the loopback, as docs/web.md defines it.
+// The first IPv4 address of an interface that is up and not the loopback, as docs/web-serving.md defines it.
 std::optional<std::string> first_lan_address() {
   ifaddrs* interfaces = nullptr;
   if (getifaddrs(&interfaces) != 0) return std::nullopt;

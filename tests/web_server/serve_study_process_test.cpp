@@ -1,4 +1,4 @@
-// `vimg serve --study` as a process on the shipped matching example, for two bounds of docs/web.md
+// `vimg serve --study` as a process on the shipped matching example, for two bounds of docs/web-serving.md
 // ("Connections") that only the real program shows: SIGTERM while an answer is being synced, and
 // the descriptors the trial files share with the connections. The participants' keys come from
 // the API (/api/link, with the researcher's key the server prints), their first trial from

@@ -1,4 +1,4 @@
-// The static server's refusals that docs/web.md ("Serving") promises beyond the way out of the folder:
+// The static server's refusals that docs/web-serving.md ("Serving") promises beyond the way out of the folder:
 // a NUL or a backslash in the path (plain or percent-encoded) is forbidden (403); a FIFO or a device
 // in the site, or linked into it, is never opened for reading (404, or 403 for a link out of the
 // site), so a request for one can neither hang a worker on a FIFO without a writer nor stream
@@ -84,7 +84,7 @@ TEST_F(StaticServerBounds, ADeviceNodeInsideTheSiteIsNeverRead) {
 }
 
 TEST_F(StaticServerBounds, AFileIsServedUpTo64MiBAndNotAByteMore) {
-  ASSERT_EQ(kMaxServedFileBytes, std::size_t{64} << 20);  // the bound docs/web.md names
+  ASSERT_EQ(kMaxServedFileBytes, std::size_t{64} << 20);  // the bound docs/web-serving.md names
   // Sparse files: the bound is on the size, whatever the disk holds.
   { std::ofstream(site_ / "at_bound.vsc"); }
   { std::ofstream(site_ / "past_bound.vsc"); }

@@ -1,4 +1,4 @@
-// The read-only server of a built site over real sockets (docs/web.md, "Serving"): the site's
+// The read-only server of a built site over real sockets (docs/web-serving.md, "Serving"): the site's
 // files with their types, and every way out of the folder, every method but GET and HEAD, every
 // listing and every oversized request refused. Requests are sent byte for byte (raw_http.hpp).
 #include <gtest/gtest.h>

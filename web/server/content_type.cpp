@@ -18,7 +18,7 @@ std::string content_type_of(const std::filesystem::path& file) {
       {".css", "text/css; charset=utf-8"},
       {".svg", "image/svg+xml"},
       {".txt", "text/plain; charset=utf-8"},
-      {".vsc", "application/octet-stream"},  // the compact compiled image (docs/web.md)
+      {".vsc", "application/octet-stream"},  // the compact compiled image (docs/web-site.md)
   }};
   std::string extension = file.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

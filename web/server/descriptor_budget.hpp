@@ -1,6 +1,6 @@
 #pragma once
 // One budget of file descriptors for the server's sockets and the files the routes hold
-// (docs/web.md, "Connections"): the process may open `descriptor_limit` (its soft limit, raised to
+// (docs/web-serving.md, "Connections"): the process may open `descriptor_limit` (its soft limit, raised to
 // the hard one at start). Of these, kKeptDescriptors stay free for files opened while serving (a
 // file read for a reply, a participant's first trial file, the watcher, the log); the long-held
 // files (each participant's trial file stays open) come off the connections' share as they open.

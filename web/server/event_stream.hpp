@@ -1,5 +1,5 @@
 #pragma once
-// Server-Sent Events for the open pages (docs/web.md, "Serving"): `/events` streams
+// Server-Sent Events for the open pages (docs/web-serving.md, "Serving"): `/events` streams
 // "event: image\ndata: NAME\n\n" each time an image of the site was rewritten, so the page fetches
 // images/NAME.vsc again. One EventBroadcaster is shared by every open stream: publish() appends a
 // message and wakes them all; each stream keeps a cursor (the number of messages it has sent) and

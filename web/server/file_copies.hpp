@@ -1,5 +1,5 @@
 #pragma once
-// The bytes of the site's files while replies send them (docs/web.md, "Connections"): one copy per
+// The bytes of the site's files while replies send them (docs/web-serving.md, "Connections"): one copy per
 // file, shared by every reply of it (4000 pages fetching the 200 KB wasm hold 200 KB, not 800 MB),
 // and a budget on the bytes all copies hold at once. A copy lives while a reply holds it: the
 // last reply's write done (or its connection closed), it is freed and its bytes leave the budget.

@@ -1,5 +1,5 @@
 #pragma once
-// The bounds every connection of the server is held to (docs/web.md, "Connections"), and what the
+// The bounds every connection of the server is held to (docs/web-serving.md, "Connections"), and what the
 // engine counts (web/server/http_engine.hpp), without the network library's types.
 #include <chrono>
 #include <cstddef>

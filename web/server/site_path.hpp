@@ -1,5 +1,5 @@
 #pragma once
-// Which file of a built site a request names, or why none (docs/web.md, "Serving"). The server is
+// Which file of a built site a request names, or why none (docs/web-serving.md, "Serving"). The server is
 // read-only and serves the site's folder only:
 //   - the URL path is taken already percent-decoded (so "%2e%2e" has become ".."); a ".." or "."
 //     segment, a NUL or a backslash is forbidden, never resolved;

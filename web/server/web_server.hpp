@@ -1,5 +1,5 @@
 #pragma once
-// The read-only server of a built web site (docs/web.md, "Serving"), event driven on Boost.Beast
+// The read-only server of a built web site (docs/web-serving.md, "Serving"), event driven on Boost.Beast
 // (web/server/http_engine.hpp: one network thread, the routes on a few workers, the writing ones
 // apart; an idle or slow connection costs no worker):
 //   - GET and HEAD only; any other method gets 405 with "Allow: GET, HEAD" and the connection closes;

@@ -1,4 +1,4 @@
-// Pointer events on the AudioContext's clock (docs/web.md, "Placement in the audio"). Pure: every
+// Pointer events on the AudioContext's clock (docs/web-audio.md, "Placement in the audio"). Pure: every
 // clock is read by the caller and passed in as a `reading`:
 //   nowMs            performance.now() when the reading was taken
 //   currentTime      the context's currentTime then (the render position: it advances once per

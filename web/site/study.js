@@ -5,7 +5,7 @@
 // window.vimg.study, each trial's answer, the training countdown. The link is
 // study.html#participant=ID&key=KEY; the key goes in the X-Vimg-Key header, never in a URL.
 // window.vimg.ready: a promise that resolves once the study is loaded (rejects when it cannot be);
-// window.vimg.study: state(), proceed(), skipTraining(), answer(stem) (docs/web.md).
+// window.vimg.study: state(), proceed(), skipTraining(), answer(stem) (docs/web-study.md).
 // Beside it (study.html loads them first): study_answers.js (each answer kept until the server
 // confirms it, and the retries), study_screens.js (the screens and the pictures to choose from),
 // study_touch.js (pointer events to the flow and the output), study_audio.js (the sound output).

@@ -1,6 +1,6 @@
 'use strict';
 // The study page's answers on their way to the server (docs/matching-test.md, "The matching test in
-// the browser"; docs/web.md, "The page's retries"). Each answer is kept in localStorage
+// the browser"; docs/web-study.md, "The page's retries"). Each answer is kept in localStorage
 // (vimg.study.pending.ID) until the server confirms it, sent again while sending again can help,
 // and, when the server refuses it for good, kept aside (vimg.study.refused.ID) with a message that
 // says what to do. Answers kept by a closed tab go first when the link is opened again (study.js

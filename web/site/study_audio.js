@@ -1,6 +1,6 @@
 'use strict';
 // The study page's sound output (docs/matching-test.md, "The matching test in the browser";
-// docs/web.md, "Outputs per platform"): the AudioWorklet (worklet.js, which instantiates vimg.wasm
+// docs/web-audio.md, "Outputs per platform"): the AudioWorklet (worklet.js, which instantiates vimg.wasm
 // itself from the bytes posted to it) in a secure context, else a ScriptProcessorNode rendered by
 // the page's own renderer; which image it plays, and the pointer samples it renders. Used by
 // study.js (start, play) and study_touch.js (event).

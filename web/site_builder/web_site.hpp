@@ -1,5 +1,5 @@
 #pragma once
-// The site `vimg web` writes and `vimg serve` serves (docs/web.md): the page and the WebAssembly
+// The site `vimg web` writes and `vimg serve` serves (docs/web-site.md): the page and the WebAssembly
 // renderer built by the `web` preset, and each image compiled to a .vsc (storage/vsc/vsc_image.hpp) by
 // the native reader. Nothing in the site is fetched from elsewhere at run time.
 #include <filesystem>

@@ -1,5 +1,5 @@
 #pragma once
-// The API of `vimg serve --study` (docs/matching-test.md, "The matching test in the browser"; docs/web.md, "A study in the
+// The API of `vimg serve --study` (docs/matching-test.md, "The matching test in the browser"; docs/web-study.md, "A study in the
 // browser"): what the study page and the dashboard ask of the server. Keys travel in the
 // X-Vimg-Key header, never in a URL the server sees (links carry them after '#').
 //
