@@ -1,5 +1,5 @@
 // The canvas's picture of the document: the page and its grid, every primitive drawn so that its
-// parameters read at a glance (docs/editor.md, "What you see"), and the selection.
+// parameters read at a glance (docs/editor-drawing.md, "What you see"), and the selection.
 #include <imgui.h>
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 // editor designs for, ST-SIM with the sensation level, Shepard-Luce choice), shown in a window of
 // its own: the predicted confusion matrix (rows presented, columns chosen, cells shaded by p) and
 // one warning per pair likely confused, in the words of `vimg compare`, and "Propose changes",
-// which hands the images to `vimg separate`'s engine (proposal_window.hpp). docs/editor.md.
+// which hands the images to `vimg separate`'s engine (proposal_window.hpp). docs/editor-actuator-and-confusion.md.
 //
 // Threads: start(), draw() and the destructor on the GUI thread. The comparison runs on a worker
 // thread (which renders on every core through run_compare); it hands its result over under a mutex

@@ -1,5 +1,5 @@
 #pragma once
-// "Propose changes" (docs/editor.md, docs/separate.md): the images compared in the "Predicted
+// "Propose changes" (docs/editor-actuator-and-confusion.md, docs/separate.md): the images compared in the "Predicted
 // confusion" window handed to `vimg separate`'s engine (study/separate.hpp, the same code, with
 // the actuator the editor designs for and its felt band), shown in a window of its own: per image
 // the share identified before and after and each change ("surface 'texture': period 2.2 -> 3.1
