@@ -1,4 +1,4 @@
-// The real-time loop as the live players run it (docs/benchmarks.md, "Touch prediction in the
+// The real-time loop as the live players run it (docs/benchmarks/touch-prediction.md, "Touch prediction in the
 // render loop"): RealtimeRenderer over the smiley (assets/examples/smiley.vimg), 1 or 10 fingers
 // circling on its face at 120 mm/s with touch events at 60 or 120 Hz, at 8 kHz (the native players' rate) or
 // 48 kHz (the page's), 1 ms blocks, touch-latency compensation on (the learned model, 25 ms, the

@@ -1,7 +1,7 @@
 // The native cost per sample of the path the web page's renderGesture runs in WebAssembly
 // (web/wasm/web_renderer.cpp): parse the gesture CSV, render it through the actuator chain at
 // 48 kHz into memory. Compare with `node bench/web_render_bench.mjs` on the same image, gestures
-// and profile (docs/benchmarks.md, "WebAssembly render"): the ratio is wasm / native.
+// and profile (docs/benchmarks/web-and-wasm.md, "WebAssembly render"): the ratio is wasm / native.
 #include <benchmark/benchmark.h>
 
 #include <string>

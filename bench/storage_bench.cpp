@@ -1,4 +1,4 @@
-// Storage benchmarks (docs/benchmarks.md, "Storage"): loading and validating a 100 000-primitive
+// Storage benchmarks (docs/benchmarks/storage.md, "Storage"): loading and validating a 100 000-primitive
 // image against tinyxml2's bare parse of the same text, saving it, and PNG export at 10 px/mm; and
 // the hostile inputs of docs/limits.md.
 //

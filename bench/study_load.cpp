@@ -1,4 +1,4 @@
-// The study server under load beside hostile sockets (docs/benchmarks.md, "Study server under
+// The study server under load beside hostile sockets (docs/benchmarks/study-server.md, "Study server under
 // hostile sockets"): PARTICIPANTS simulated participants each answer TRIALS trials of the shipped
 // matching example through the study API, one every PERIOD ms, with their keys, as the page does
 // over one kept-alive connection each (answers delivered in order; 429, 503 and lost connections

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A 20 s, ten-finger gesture over assets/examples/smiley.vimg (70 x 140 mm), for timing
-`vimg render --touch-latency-ms` with prediction on and off (docs/benchmarks.md, "Touch prediction
+`vimg render --touch-latency-ms` with prediction on and off (docs/benchmarks/touch-prediction.md, "Touch prediction
 in the render loop"; issue 44):
 
     python3 bench/ten_finger_gesture.py > ten_fingers_20s.csv

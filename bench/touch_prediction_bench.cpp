@@ -1,6 +1,6 @@
 // The touch predictor (primitives/touch_prediction/): its cost per event and per prediction, and,
 // with --table DIR, the published protocol's table on the shared traces and the felt onset error
-// of the latency scenario (docs/latency.md, docs/benchmarks.md):
+// of the latency scenario (docs/latency.md, docs/benchmarks/touch-prediction.md):
 //   build/release/bench/touch_prediction_bench --table tests/data/touch-latency-henze2017
 //   build/release/bench/touch_prediction_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>

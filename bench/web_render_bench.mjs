@@ -1,6 +1,6 @@
 // node bench/web_render_bench.mjs SITE_DIR IMAGE.vsc GESTURE.csv [REPEATS]
 // The wasm render cost per sample (renderGesture at 48 kHz, the page's path) for comparison with
-// the native `vimg render` of the same gesture (docs/benchmarks.md, "WebAssembly render"), and the cost of
+// the native `vimg render` of the same gesture (docs/benchmarks/web-and-wasm.md, "WebAssembly render"), and the cost of
 // one finger prediction per model on the workload touch_prediction_bench's BM_Predict measures
 // natively (primitives/touch_prediction/circling_finger.hpp): the median of 5 runs of 2 000 000.
 import { readFileSync } from 'node:fs';

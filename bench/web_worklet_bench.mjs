@@ -1,5 +1,5 @@
 // node bench/web_worklet_bench.mjs VIMG [SECONDS]
-// The page's AudioWorklet with ten fingers, in Debian's headless Chromium (docs/benchmarks.md,
+// The page's AudioWorklet with ten fingers, in Debian's headless Chromium (docs/benchmarks/touch-prediction.md,
 // "Touch prediction in the render loop"; issue 44): `vimg serve` serves the smiley, the page's
 // AudioContext runs at 48 kHz (the bench asks the constructor for it: headless Chromium's fake
 // output would pick its own rate), and ten touch points (CDP Input.dispatchTouchEvent, so the page

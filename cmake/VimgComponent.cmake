@@ -1,6 +1,6 @@
 # The standard headers most of our sources include (the top of `grep -h '#include <'`). A target of
 # many files parses them once, precompiled, instead of once per file: a third of a library file's
-# compile time in Release and under the sanitizers (docs/benchmarks.md "The CI run"). Emscripten
+# compile time in Release and under the sanitizers (docs/benchmarks/ci.md "The CI run"). Emscripten
 # builds the primitives without it, so their headers still have to say what they use.
 set(VIMG_STD_PCH_HEADERS <string> <vector> <optional> <algorithm> <cmath> <cstdint> <cstddef> <string_view>
     <filesystem> <memory> <array> <utility> <span> <system_error> <variant> <map> <functional>)

@@ -1,6 +1,6 @@
 #pragma once
 // Runs independent tasks on a few threads: the PNG encoder draws and compresses bands of the
-// picture and parts of the XML text at once (docs/benchmarks.md, "PNG export").
+// picture and parts of the XML text at once (docs/benchmarks/storage.md, "PNG export").
 //
 // Threads: run_tasks() blocks its caller, which works as one of the threads. `task` runs on
 // several threads at once, for different task indices; `worker` (0 .. threads-1) says which thread

@@ -1,4 +1,4 @@
-// PNG encoding (spec section 2, docs/format.md "PNG"): the signature, IHDR, pHYs, the compressed
+// PNG encoding (spec section 2, docs/format-png.md "PNG"): the signature, IHDR, pHYs, the compressed
 // `vibroimage` iTXt chunk, the pixels in IDAT chunks, IEND. The chunks are framed here rather than
 // by libpng because libpng compresses the pixels as one stream on one thread: here the picture is
 // drawn, filtered and compressed band by band, and the XML text written and compressed in parts,
@@ -8,7 +8,7 @@
 // Pixels: each band's first row is filtered with PNG's "Sub" filter (it needs no row above, which
 // another thread may still be drawing), the others with "Up" (flat colour and vertical stripes
 // become zeros). zlib then only Huffman-codes the bytes: on the 100 000-primitive benchmark picture
-// that is 2 % bigger than its run-length strategy and 20 % faster (docs/benchmarks.md). One IDAT
+// that is 2 % bigger than its run-length strategy and 20 % faster (docs/benchmarks/storage.md). One IDAT
 // chunk per band. The XML text: zlib level 1 in parts of at least 1 MiB.
 #include <zlib.h>
 

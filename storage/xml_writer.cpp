@@ -1,4 +1,4 @@
-// write_image_xml: the canonical XML text of an image (spec section 1 "Round trip", docs/format.md).
+// write_image_xml: the canonical XML text of an image (spec section 1 "Round trip", docs/format-xml.md).
 #include <array>
 #include <span>
 #include <string>
@@ -62,7 +62,7 @@ class Writer {
 
   std::string run() {
     // Room for the whole text at once: growing an 18 MB string by doubling copies it and touches
-    // twice its pages, which cost more than writing it (docs/benchmarks.md). Untouched room costs
+    // twice its pages, which cost more than writing it (docs/benchmarks/storage.md). Untouched room costs
     // nothing (the allocator maps large blocks lazily).
     out_.reserve(4096 + size_estimate(image_.children));
     out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<vibroimage";

@@ -30,7 +30,7 @@ namespace vimg::study {
 
 // The search's budget: its exchange phase (separate_search.hpp) stops once this many variants per
 // image have been rendered (a render of the standard exploration of a 60 x 110 mm canvas and its
-// analysis take about 0.1 s of one core; docs/benchmarks.md, "vimg separate").
+// analysis take about 0.1 s of one core; docs/benchmarks/perception-compare-separate.md, "vimg separate").
 inline constexpr int kSearchVariantsPerImage = 48;
 
 struct SeparateRequest {

@@ -1,4 +1,4 @@
-// The matching test under load (docs/benchmarks.md, "Study server"): 30 participants' pages in one
+// The matching test under load (docs/benchmarks/study-server.md, "Study server"): 30 participants' pages in one
 // headless Chromium answer at once against one `vimg serve --study`, each TRIALS trials (rub,
 // Answer, a picture), all pages in step, their sound suspended after the device check. Checks that no row is lost or doubled (every participant's
 // file holds trials 1..TRIALS once, as the plan says) and prints the answer round trips the pages

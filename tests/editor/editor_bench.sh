@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The editor's two figures (docs/benchmarks.md, "Editor"), under its own Xvfb display:
+# The editor's two figures (docs/benchmarks/editor.md, "Editor"), under its own Xvfb display:
 #  1. frame time with 10 000 primitives on the canvas (whole page visible);
 #  2. in playing mode, the time from a mouse event to the output's write() of the first block that
 #     carries the drive it caused (what comes before the audio device's own buffer).

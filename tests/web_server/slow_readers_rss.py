@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# A measurement, not a ctest (docs/benchmarks.md, "Study server beside hostile sockets"): the
+# A measurement, not a ctest (docs/benchmarks/study-server.md, "Study server beside hostile sockets"): the
 # server's resident memory with N clients that each ask for one file and never read it.
 #   python3 tests/web_server/slow_readers_rss.py VIMG SITE_DIR N [FILE]
 # SITE_DIR is a built site (or any folder with an index.html); FILE defaults to /vimg.wasm.
