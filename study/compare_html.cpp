@@ -51,8 +51,9 @@ std::string stsim_table(const CompareResult& r) {
   std::string s =
       "<p class=\"note\">ST-SIM, the codec-distortion metric (vibromaf's values): how alike the waveforms are, block "
       "by block, phase included; 1 the same waveform. Of the image \u2193 against the reference \u2192 over their common "
-      "length; \u2013 where it has no value. It does not decide the prediction: two vibrations felt alike may have "
-      "unrelated waveforms.</p>\n";
+      "length; \u2013 where it has no value. Values far above 1 (up to millions) are the metric's own where a "
+      "reference holds almost no energy, as an actuator's ring does (docs/stsim.md). It does not decide the "
+      "prediction: two vibrations felt alike may have unrelated waveforms.</p>\n";
   s += "<table>\n<tr><th class=\"name\">ST-SIM of \u2193 against reference \u2192</th>";
   for (const CompareInput& in : r.inputs) s += "<th>" + xml_text(in.label) + "</th>";
   s += "</tr>\n";

@@ -169,6 +169,8 @@ TEST_F(CompareStSim, TheReportsShowThePlainMetricAndTheConfusionIsTheDiscriminat
   // The page says what ST-SIM is and shows the same numbers.
   const std::string html = read_text(dir_ / "r.html");
   EXPECT_NE(html.find("It does not decide the prediction"), std::string::npos);
+  EXPECT_NE(html.find("Values far above 1 (up to millions) are the metric's own"), std::string::npos)
+      << "the page says why ST-SIM runs above 1";
   const std::size_t table = html.find("<th class=\"name\">ST-SIM of");
   ASSERT_NE(table, std::string::npos);
   const std::string cells = html.substr(table, html.find("</table>", table) - table);
