@@ -3,7 +3,10 @@
 README.md, docs/*.md and docs/**/*.md must name a file that exists, and a `#anchor` after it (or
 alone, for the same page) must be one of that file's headings as GitHub spells its anchors.
 
-  python3 scripts/check_doc_links.py      prints each broken link as FILE:LINE: ..., exit 1 if any
+  python3 scripts/check_doc_links.py [ROOT]   prints each broken link as FILE:LINE: ..., exit 1 if any
+                                              (ROOT: the tree to check, this checkout by default)
+
+A ctest runs it on this tree (doc_links) and on a fixture of known breaches (doc_links_fixture).
 """
 import glob
 import os
@@ -32,13 +35,21 @@ def anchors(path):
 
 
 def main():
+    global ROOT
+    if len(sys.argv) > 1:
+        ROOT = os.path.abspath(sys.argv[1])
     pages = [os.path.join(ROOT, "README.md")]
     pages += sorted(glob.glob(os.path.join(ROOT, "docs", "**", "*.md"), recursive=True))
     broken = 0
     for page in pages:
         with open(page, encoding="utf-8") as f:
             lines = f.read().split("\n")
+        fence = False
         for number, line in enumerate(lines, 1):
+            if line.startswith("```"):
+                fence = not fence
+            if fence:
+                continue
             for target in LINK.findall(line):
                 if re.match(r"[a-z][a-z0-9+.-]*:", target):  # http:, https:, mailto:
                     continue
