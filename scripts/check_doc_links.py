@@ -36,8 +36,14 @@ def anchors(path):
 
 def main():
     global ROOT
-    if len(sys.argv) > 1:
+    if len(sys.argv) > 2 or (len(sys.argv) == 2 and sys.argv[1] in ("-h", "--help")):
+        print(__doc__.strip())
+        return 0 if len(sys.argv) == 2 else 2
+    if len(sys.argv) == 2:
         ROOT = os.path.abspath(sys.argv[1])
+        if not os.path.isfile(os.path.join(ROOT, "README.md")):
+            print(f"{sys.argv[1]}: error: not a checkout (no README.md in it)", file=sys.stderr)
+            return 2
     pages = [os.path.join(ROOT, "README.md")]
     pages += sorted(glob.glob(os.path.join(ROOT, "docs", "**", "*.md"), recursive=True))
     broken = 0
