@@ -6,9 +6,15 @@
 
 namespace vimg {
 
+double pacinian_threshold_re_best_db(double frequency_hz) {
+  if (!(frequency_hz > 0.0)) frequency_hz = kLowestModelledThresholdHz;
+  if (frequency_hz < kLowestModelledThresholdHz) frequency_hz = kLowestModelledThresholdHz;
+  if (frequency_hz <= kPacinianBestFrequencyHz) return kPacinianSlopeBelowBestDbPerOctave * std::log2(kPacinianBestFrequencyHz / frequency_hz);
+  return vibrotactile_threshold_db(frequency_hz) - kThresholdAtBestFrequencyDb;
+}
+
 double threshold_peak_displacement_m(double frequency_hz, const LevelCalibration& calibration) {
-  const double above_best_db = vibrotactile_threshold_db(frequency_hz) - kThresholdAtBestFrequencyDb;
-  return calibration.threshold_at_250hz_peak_displacement_m * std::pow(10.0, above_best_db / 20.0);
+  return calibration.threshold_at_250hz_peak_displacement_m * std::pow(10.0, pacinian_threshold_re_best_db(frequency_hz) / 20.0);
 }
 
 }  // namespace vimg

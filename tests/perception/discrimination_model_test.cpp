@@ -102,13 +102,16 @@ TEST(DiscriminationModel, DotLineAndSurfaceArePredictedApart) {
 
 TEST(DiscriminationModel, TexturesDifferingBelowTheLraBandAreMoreConfusableThroughIt) {
   // The same 175 Hz component; below the LRA's felt band one has 30 Hz, the other 45 Hz (a Weber
-  // fraction of 0.5: two JNDs).
+  // fraction of 0.5: two JNDs of the lower partial). The model's pitch is one centroid, to which the
+  // lower partial gives about a third of the excitation, so the ideal actuator moves it about half
+  // a pitch JND (confused about a third of the time); through the LRA the two are alike.
   const auto a = test::partials_signal(kSeconds, {{0.5, 175.0}, {0.5, 30.0}});
   const auto b = test::partials_signal(kSeconds, {{0.5, 175.0}, {0.5, 45.0}});
   const PerceptionMatrix ideal = confusion_of({a, b});
   const PerceptionMatrix lra = confusion_of({through_lra(a), through_lra(b)});
-  EXPECT_GT(lra[0][1], ideal[0][1] + 0.2);
-  EXPECT_GT(lra[1][0], ideal[1][0] + 0.2);
+  EXPECT_GE(lra[0][1], 0.45);
+  EXPECT_GT(lra[0][1], ideal[0][1] + 0.1);
+  EXPECT_GT(lra[1][0], ideal[1][0] + 0.1);
   EXPECT_FALSE(likely_confused_pairs(lra).empty());
 }
 

@@ -36,9 +36,15 @@ std::size_t reference_hold_bin() {
   return k;
 }
 
-// The peak displacement at threshold at the reference's bin k: the published curve anchored at
-// 250 Hz to 0.1 um (Verrillo 1963; docs/perception.md), i.e. 0.1 um * 10^((T_k + 77) / 20).
-double threshold_displacement_m(std::size_t k) { return 1e-7 * std::pow(10.0, (reference_threshold_db().at(k) + 77.0) / 20.0); }
+// The model's Pacinian threshold as peak displacement at the reference's bin k, computed here from
+// its stated form (docs/perception.md): anchored at 250 Hz to 0.1 um (Verrillo 1963); below 250 Hz
+// rising 13 dB per octave (the published 12 dB/octave, read 10-14); above 250 Hz the reference
+// curve's rise, 0.1 um * 10^((T_k + 77) / 20).
+double threshold_displacement_m(std::size_t k) {
+  const double f = reference_frequency_hz(k);
+  if (f <= 250.0) return 1e-7 * std::pow(10.0, 13.0 * std::log2(250.0 / f) / 20.0);
+  return 1e-7 * std::pow(10.0, (reference_threshold_db().at(k) + 77.0) / 20.0);
+}
 
 // The full-scale amplitude (10 m/s^2, the default calibration) of a sine at the reference's bin k
 // whose peak displacement is `db` above that threshold.
@@ -55,23 +61,40 @@ TEST(VibrotactileThreshold, IsThePublishedCurveAtItsSamplePoints) {
   ASSERT_EQ(hold, 100u);
   for (std::size_t k = 0; k < hold; ++k) {
     EXPECT_NEAR(vibrotactile_threshold_db(reference_frequency_hz(k)), reference_threshold_db()[k], 1e-9) << "bin " << k;
-    EXPECT_NEAR(threshold_peak_displacement_m(reference_frequency_hz(k)) / threshold_displacement_m(k), 1.0, 1e-9) << "bin " << k;
   }
   EXPECT_EQ(vibrotactile_threshold_db(reference_frequency_hz(hold)), 0.0);
   EXPECT_EQ(vibrotactile_threshold_db(4000.0), 0.0);
   // The curve's defining points (docs/perception.md): -77 dB at 250 Hz, -15 dB at 0 Hz.
   EXPECT_NEAR(vibrotactile_threshold_db(250.0), -77.0, 1e-12);
   EXPECT_NEAR(vibrotactile_threshold_db(0.0), -15.0, 1e-12);
+}
+
+TEST(PacinianThreshold, RisesThirteenDbPerOctaveBelow250HzAndAsTheReferenceCurveAbove) {
+  for (std::size_t k = 1; k < reference_hold_bin(); ++k) {
+    EXPECT_NEAR(threshold_peak_displacement_m(reference_frequency_hz(k)) / threshold_displacement_m(k), 1.0, 1e-9) << "bin " << k;
+  }
+  // The slope itself, octave by octave (40, 80, 160 Hz against twice their frequency).
+  for (double f : {40.0, 80.0, 125.0}) {
+    EXPECT_NEAR(20.0 * std::log10(threshold_peak_displacement_m(f) / threshold_peak_displacement_m(2.0 * f)), 13.0, 1e-9) << f;
+  }
+  // Continuous at the minimum, and rising on both sides of it.
+  EXPECT_NEAR(threshold_peak_displacement_m(249.999) / threshold_peak_displacement_m(250.001), 1.0, 1e-4);
+  EXPECT_GT(threshold_peak_displacement_m(200.0), threshold_peak_displacement_m(250.0));
+  EXPECT_GT(threshold_peak_displacement_m(300.0), threshold_peak_displacement_m(250.0));
   // The anchor: 0.1 um at 250 Hz (Verrillo 1963, Bolanowski et al. 1988), scaled with the calibration.
   EXPECT_NEAR(threshold_peak_displacement_m(250.0), 1e-7, 1e-19);
   LevelCalibration half;
   half.threshold_at_250hz_peak_displacement_m = 0.5e-7;
   EXPECT_NEAR(threshold_peak_displacement_m(40.0, half) / threshold_peak_displacement_m(40.0), 0.5, 1e-12);
+  // Outside the curve's domain (0 Hz, negative, NaN) it is finite: the value at its lowest frequency.
+  for (double f : {0.0, -5.0, std::nan("")}) {
+    EXPECT_EQ(threshold_peak_displacement_m(f), threshold_peak_displacement_m(kLowestModelledThresholdHz)) << f;
+  }
 }
 
 TEST(SensationLevel, ASineReadsItsLevelAboveThreshold) {
   // Sines at the reference's sample frequencies from 62.6 to 500.5 Hz (bins 8 to 64, where the
-  // Pacinian curve is the skin's threshold), at amplitudes computed from the published table: the
+  // Pacinian curve is the skin's threshold), at amplitudes computed from its stated form: the
   // discrimination model's level (its strongest 512 ms frame) reads the level above threshold,
   // within 0.5 dB up to 250 Hz and 2 dB at 500 Hz (the curve rises 1.5 dB per 7.8 Hz there), and
   // 0 below threshold (nothing felt).
