@@ -5,8 +5,9 @@
 //   T(f) = |62 / log10(c)^2 * log10(f / 550 + c)^2| - 77 dB,  c = 1 - 250 / 550,
 // lowest at 250 Hz (-77 dB), 62 dB higher at 0 Hz, rising steeply below 100 Hz and above 250 Hz
 // until it reaches 0 dB (near 781 Hz), where the reference holds it constant. dB re a DCT
-// coefficient of 1 (the ST-SIM domain), i.e. relative: the sensation level (sensation_level.hpp)
-// anchors it to a physical acceleration.
+// coefficient of 1 (the ST-SIM domain), i.e. relative. The discrimination model's Pacinian
+// threshold (sensation_level.hpp) follows its rise above 250 Hz only; below, it has the published
+// slope.
 #include <array>
 #include <cstddef>
 
