@@ -78,7 +78,7 @@ std::unique_ptr<HidTransport> HidForceEmulatorHost::open(const std::string& path
     if (e.candidate.path != path) continue;
     ++opens_;
     if (e.kind == Kind::locked) {
-      error = "cannot open " + path + ": no read/write permission (see the udev rule in docs/volume.md)";
+      error = "cannot open " + path + ": no read/write permission (see the udev rule in docs/volume-force-device.md)";
       return nullptr;
     }
     auto device = std::make_unique<HidForceEmulator>(e.info);

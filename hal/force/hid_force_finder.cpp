@@ -7,7 +7,7 @@
 namespace vimg {
 namespace {
 
-constexpr const char* kUdevHint = "see the udev rule in docs/volume.md, \"Feel it with a force device\"";
+constexpr const char* kUdevHint = "see the udev rule in docs/volume-force-device.md, \"Access to /dev/hidraw\"";
 
 std::string ids(const HidCandidate& c) {
   char text[16];

@@ -52,7 +52,7 @@ std::unique_ptr<HidapiTransport> HidapiTransport::open(std::uint16_t vendor_id, 
   if (!init_hidapi(error)) return nullptr;
   hid_device* d = hid_open(vendor_id, product_id, nullptr);
   if (!d) {
-    error = "hidapi: no device with the given vendor and product id (or no permission: see docs/volume.md)";
+    error = "hidapi: no device with the given vendor and product id (or no permission: see docs/volume-force-device.md)";
     return nullptr;
   }
   return std::unique_ptr<HidapiTransport>(new HidapiTransport(d));
@@ -66,7 +66,7 @@ std::unique_ptr<HidapiTransport> HidapiTransport::open_path(const std::string& p
     if (::access(path.c_str(), R_OK | W_OK) != 0) {
       const int e = errno;
       if (e == EACCES || e == EPERM) {
-        error += ": no read/write permission (see the udev rule in docs/volume.md)";
+        error += ": no read/write permission (see the udev rule in docs/volume-force-device.md)";
       } else {
         error += std::string(": ") + std::strerror(e);
       }

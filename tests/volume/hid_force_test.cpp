@@ -234,7 +234,7 @@ TEST(HidForceSearch, SaysWhatItFoundAndWhyNothingAnswered) {
   EXPECT_EQ(none.report,
             "no HID device answers the force protocol (info feature report 0x01, version 1); found:\n"
             "  046d:c52b /dev/hidraw0 \"USB Receiver\": cannot read the device info report (0x01)\n"
-            "  1209:0001 /dev/hidraw1: cannot open /dev/hidraw1: no read/write permission (see the udev rule in docs/volume.md)\n"
+            "  1209:0001 /dev/hidraw1: cannot open /dev/hidraw1: no read/write permission (see the udev rule in docs/volume-force-device.md)\n"
             "  1209:0002 /dev/hidraw2 \"Future stick\": unsupported protocol version 7 (expected 1)");
 
   // A named path: only that one.
@@ -252,7 +252,7 @@ TEST(HidForceSearch, SaysWhatItFoundAndWhyNothingAnswered) {
   const HidForceSearch nothing = find_hid_force_device(empty, "");
   EXPECT_FALSE(nothing.device);
   EXPECT_NE(nothing.report.find("no HID device is visible"), std::string::npos) << nothing.report;
-  EXPECT_NE(nothing.report.find("udev rule in docs/volume.md"), std::string::npos) << nothing.report;
+  EXPECT_NE(nothing.report.find("udev rule in docs/volume-force-device.md"), std::string::npos) << nothing.report;
 }
 
 TEST(HidForceSearch, StopsTryingWhenTheTimeBudgetIsSpent) {
