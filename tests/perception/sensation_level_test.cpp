@@ -73,7 +73,7 @@ TEST(PacinianThreshold, RisesThirteenDbPerOctaveBelow250HzAndAsTheReferenceCurve
   for (std::size_t k = 1; k < reference_hold_bin(); ++k) {
     EXPECT_NEAR(threshold_peak_displacement_m(reference_frequency_hz(k)) / threshold_displacement_m(k), 1.0, 1e-9) << "bin " << k;
   }
-  // The slope itself, octave by octave (40, 80, 160 Hz against twice their frequency).
+  // The slope itself, octave by octave (40, 80 and 125 Hz against twice their frequency).
   for (double f : {40.0, 80.0, 125.0}) {
     EXPECT_NEAR(20.0 * std::log10(threshold_peak_displacement_m(f) / threshold_peak_displacement_m(2.0 * f)), 13.0, 1e-9) << f;
   }
