@@ -168,14 +168,21 @@ std::optional<NrrdHeaderScan> scan_nrrd_header(std::string_view bytes, Diagnosti
       scan.data_line = line_number + 1;
       break;
     }
-    if (line[0] == '#' || line.find(":=") != std::string_view::npos) {
+    if (line[0] == '#') {
       scan.teem_header += std::string(line) + "\n";
       continue;
     }
-    if (line.size() > kMaxNrrdFieldLineBytes) {  // teem overflows its message buffer on long words
+    // teem overflows its message buffer on long words. Checked before a key/value line is told
+    // apart: teem reads a line that starts with a field's name as that field even when it holds
+    // ':=', so every line but a comment is held to the limit.
+    if (line.size() > kMaxNrrdFieldLineBytes) {
       list.error(line_number, "the field line is longer than " + std::to_string(kMaxNrrdFieldLineBytes) + " bytes (limit " +
                                   std::to_string(kMaxNrrdFieldLineBytes) + ")");
       failed = true;
+      continue;
+    }
+    if (line.find(":=") != std::string_view::npos) {
+      scan.teem_header += std::string(line) + "\n";
       continue;
     }
     const std::size_t colon = line.find(": ");
