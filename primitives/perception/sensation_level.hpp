@@ -16,7 +16,6 @@
 
 namespace vimg {
 
-inline constexpr double kPacinianBestFrequencyHz = 250.0;
 inline constexpr double kPacinianSlopeBelowBestDbPerOctave = 13.0;
 inline constexpr double kLowestModelledThresholdHz = 1.0;
 
@@ -31,8 +30,5 @@ struct LevelCalibration {
 
 // The Pacinian detection threshold at frequency_hz as peak displacement in m under `calibration`.
 double threshold_peak_displacement_m(double frequency_hz, const LevelCalibration& calibration = {});
-
-// The shape of that threshold, dB above its value at 250 Hz.
-double pacinian_threshold_re_best_db(double frequency_hz);
 
 }  // namespace vimg
