@@ -98,8 +98,7 @@ class TraceBuilder {
       return false;
     }
     if (e.seconds - first_->seconds > static_cast<std::int64_t>(kMaxGestureDurationS) + 1) {
-      list_.error(line, "the recording is longer than " + std::to_string(static_cast<int>(kMaxGestureDurationS)) +
-                            " s (limit " + std::to_string(static_cast<int>(kMaxGestureDurationS)) + ")");
+      list_.error(line, touch_trace_too_long_problem());
       return false;
     }
     // Whole microseconds first, so that times keep the recording's decimals.
@@ -110,8 +109,7 @@ class TraceBuilder {
       return false;
     }
     if (t > kMaxGestureDurationS) {
-      list_.error(line, "the recording is longer than " + std::to_string(static_cast<int>(kMaxGestureDurationS)) +
-                            " s (limit " + std::to_string(static_cast<int>(kMaxGestureDurationS)) + ")");
+      list_.error(line, touch_trace_too_long_problem());
       return false;
     }
     time_s_ = t;
@@ -353,6 +351,11 @@ std::string touch_axis_problem(const TouchAxis& axis, const std::string& name) {
   const std::string where = ", line " + std::to_string(axis.line) + ")";
   if (axis.min == axis.max) return "gives an empty " + name + " range (min " + whole(axis.min) + " = max " + whole(axis.max) + where;
   return "gives a reversed " + name + " range (min " + whole(axis.min) + " > max " + whole(axis.max) + where;
+}
+
+std::string touch_trace_too_long_problem() {
+  const std::string limit = std::to_string(static_cast<int>(kMaxGestureDurationS));
+  return "the recording is longer than " + limit + " s (limit " + limit + ")";
 }
 
 TouchTraceParseResult load_touch_trace(const std::filesystem::path& path) {

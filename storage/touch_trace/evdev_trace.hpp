@@ -41,6 +41,11 @@ struct TouchAxis {
 // line 12)"; `name` is the axis ("x").
 std::string touch_axis_problem(const TouchAxis& axis, const std::string& name);
 
+// The message for a recording whose events span more than a gesture may last (kMaxGestureDurationS):
+// "the recording is longer than 600 s (limit 600)". Both readers (evemu/getevent, touch log) use it,
+// so that every recording they accept makes a gesture the gesture reader takes back.
+std::string touch_trace_too_long_problem();
+
 struct TouchSample {
   enum class Phase { down, move, up };
   double time_s = 0.0;  // since the first event of the recording

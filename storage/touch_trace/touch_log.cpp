@@ -99,6 +99,10 @@ TouchTraceParseResult parse_touch_log(std::string_view text, const std::string& 
       break;
     }
     if (!have_first) first_ms = v[1];
+    if ((v[1] - first_ms) / 1000.0 > kMaxGestureDurationS) {
+      diagnostics.error(line_number, touch_trace_too_long_problem());
+      break;
+    }
     have_first = true;
     last_ms = v[1];
     if (++events > kMaxGestureRows) {

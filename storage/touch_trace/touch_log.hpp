@@ -6,7 +6,8 @@
 // each down starts a contact, moves follow it, an up ends it. Times are time_ms / 1000, relative
 // to the first line; the x and y units are the log's (pixels: give --px-per-mm). A move or up
 // without a down, or a down before the previous contact's up, is an error at its line; time_ms may
-// repeat but never decrease. Limits: kMaxTouchTraceFileBytes, kMaxGestureRows events.
+// repeat but never decrease. Limits: kMaxTouchTraceFileBytes, kMaxGestureRows events, and
+// kMaxGestureDurationS from the first line's time_ms (touch_trace_too_long_problem()).
 // parse_touch_trace() and load_touch_trace() read this format when looks_like_touch_log() says so.
 #include <string>
 #include <string_view>

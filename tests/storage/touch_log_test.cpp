@@ -5,6 +5,7 @@
 #include <string>
 
 #include "storage/touch_trace/evdev_trace.hpp"
+#include "storage/limits.hpp"
 #include "storage/touch_trace/touch_log.hpp"
 
 namespace vimg {
@@ -47,6 +48,19 @@ TEST(TouchLog, BadLinesAreNamedWithTheirNumbers) {
   EXPECT_EQ(first_error("1;2;3;4;5;0\n1;3;3;4;5\n"),
             "log.txt:2: error: expected 6 fields separated by ';' (epoch_ms;time_ms;x;y;size;action), got '1;3;3;4;5'");
   EXPECT_EQ(first_error("1;2;3;4;5;0\n1;3;3;4;5;0\n"), "log.txt:2: error: a down before the previous touch's up");
+}
+
+// A log is held to the gesture's duration, as an evemu recording is: what it reads, the gesture
+// reader (storage/gesture_csv.hpp) takes back (found by touch_trace_fuzz).
+TEST(TouchLog, ALogLongerThanAGestureMayLastIsRefusedAtTheLineThatShowsIt) {
+  const int limit_ms = static_cast<int>(kMaxGestureDurationS * 1000.0);
+  const std::string at_limit = "1;2;3;4;5;0\n1;" + std::to_string(2 + limit_ms) + ";4;5;5;1\n";
+  const TouchTraceParseResult r = parse_touch_trace(at_limit, "log.txt");
+  ASSERT_TRUE(r.trace.has_value());
+  EXPECT_DOUBLE_EQ(r.trace->duration_s, kMaxGestureDurationS);
+  EXPECT_EQ(first_error("1;2;3;4;5;0\n1;5;4;5;5;2\n1;" + std::to_string(3 + limit_ms) + ";4;5;5;1\n"),
+            "log.txt:3: error: the recording is longer than 600 s (limit 600)");
+  EXPECT_EQ(first_error("1;2;3;4;5;0\n1;1e300;4;5;5;1\n"), "log.txt:2: error: the recording is longer than 600 s (limit 600)");
 }
 
 TEST(TouchLog, ALogCutDuringATouchLiftsItAtItsLastEventWithAWarning) {
