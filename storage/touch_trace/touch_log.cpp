@@ -136,12 +136,17 @@ TouchTraceParseResult parse_touch_log(std::string_view text, const std::string& 
   if (!diagnostics.has_errors() && !have_first) diagnostics.error(0, "no touch events");
   if (!diagnostics.has_errors() && in_contact) {
     // A log cut before the last up: that touch ends at its last event.
+    // A lone down gets its up as one more sample, which must still fit in a gesture's rows.
     TouchContact& last = trace.contacts.back();
-    if (last.samples.size() < 2) {
-      last.samples.push_back(last.samples.back());
+    if (last.samples.size() < 2 && events >= kMaxGestureRows) {
+      diagnostics.error(line_number, "the log ends during a touch, and its up would be gesture row " +
+                                         std::to_string(events + 1) + " (limit " + std::to_string(kMaxGestureRows) +
+                                         " gesture rows)");
+    } else {
+      if (last.samples.size() < 2) last.samples.push_back(last.samples.back());
+      last.samples.back().phase = TouchSample::Phase::up;
+      diagnostics.warning(line_number, "the log ends during a touch: it is lifted at its last event");
     }
-    last.samples.back().phase = TouchSample::Phase::up;
-    diagnostics.warning(line_number, "the log ends during a touch: it is lifted at its last event");
   }
   trace.duration_s = (last_ms - first_ms) / 1000.0;
   trace.last_line = line_number;

@@ -63,6 +63,22 @@ TEST(TouchLog, ALogLongerThanAGestureMayLastIsRefusedAtTheLineThatShowsIt) {
   EXPECT_EQ(first_error("1;2;3;4;5;0\n1;1e300;4;5;5;1\n"), "log.txt:2: error: the recording is longer than 600 s (limit 600)");
 }
 
+// A log of exactly kMaxGestureRows events makes a gesture; when it ends on a lone down, that
+// touch's up would be one row more, and is refused rather than making a gesture nobody can read.
+TEST(TouchLog, ALogAtTheRowLimitMakesAGestureAndALoneDownBeyondItIsRefused) {
+  // One touch of kMaxGestureRows events: a down, moves, an up.
+  std::string moves;
+  for (std::size_t i = 0; i + 3 < kMaxGestureRows; ++i) moves += "1;10;3;4;5;2\n";
+  const TouchTraceParseResult r = parse_touch_trace("1;10;3;4;5;0\n" + moves + "1;10;3;4;5;2\n1;10;3;4;5;1\n", "log.txt");
+  ASSERT_TRUE(r.trace.has_value());
+  EXPECT_EQ(r.trace->contacts.at(0).samples.size(), kMaxGestureRows);
+  // The same count, with a touch one row shorter followed by a lone down as the last event.
+  const std::string line = std::to_string(kMaxGestureRows);
+  EXPECT_EQ(first_error("1;10;3;4;5;0\n" + moves + "1;10;3;4;5;1\n1;10;3;4;5;0\n"),
+            "log.txt:" + line + ": error: the log ends during a touch, and its up would be gesture row " +
+                std::to_string(kMaxGestureRows + 1) + " (limit " + line + " gesture rows)");
+}
+
 TEST(TouchLog, ALogCutDuringATouchLiftsItAtItsLastEventWithAWarning) {
   const TouchTraceParseResult r = parse_touch_trace("1;2;3;4;5;0\n1;19;4;5;5;2\n", "log.txt");
   ASSERT_TRUE(r.trace.has_value());
