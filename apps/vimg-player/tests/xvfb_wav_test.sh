@@ -13,17 +13,9 @@ cat > "$work/plate.vimg" <<'XML'
 </vibroimage>
 XML
 
-display=""
-for n in $(seq 90 120); do
-  if [ ! -e "/tmp/.X11-unix/X$n" ] && [ ! -e "/tmp/.X$n-lock" ]; then display=":$n"; break; fi
-done
-[ -n "$display" ] || { echo "no free X display"; exit 1; }
-Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
-xvfb_pid=$!
-cleanup() { kill "$xvfb_pid" 2>/dev/null || true; }
-trap cleanup EXIT
-export DISPLAY="$display"
-for _ in $(seq 50); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+source "$(dirname "$0")/../../../tests/xvfb_display.sh"
+start_xvfb 90 120 1024x768x24 "$work/xvfb.log"
+trap stop_xvfb EXIT
 
 # Canvas 100 x 60 mm at 5 px/mm = 500 x 300 px, centred in the 800 x 600 window.
 # drag_run NAME [player options...]: drags across the plate and quits; the WAV is $work/NAME.wav.
