@@ -158,6 +158,46 @@ TEST(Identification, APairThatDiffersOnTwoCuesIsToldApartBetterThanTheNearestCho
   EXPECT_NEAR(nearest_choice, 0.251, 0.001);
 }
 
+// Along one cue the rule is the nearest-choice observer itself: j's cell runs from the midpoint
+// with its lower neighbour to the midpoint with its upper one (in d', with the set's context
+// noise), and p(j | i) is the chance of i's observation there. Uneven spacings, on each cue; far
+// members get the observer's tail, not the pair's: the member 7 JNDs from the first gets 0.00001
+// of its choices (Luce's rule, the rule before this one, gave 0.0012: the members between did not
+// take those observations).
+TEST(Identification, AlongOneCueTheMatrixIsTheNearestChoiceObserversExactly) {
+  const std::vector<double> at_jnd = {0.0, 1.0, 3.0, 3.5, 7.0};
+  const double range = kContextNoisePerDPrime * kDPrimePerJnd * 7.0;
+  const double per_jnd = kDPrimePerJnd / std::sqrt(1.0 + range * range);
+  for (std::size_t cue = 0; cue < kCueCount; ++cue) {
+    std::vector<CueDistances> points(at_jnd.size());
+    for (std::size_t i = 0; i < at_jnd.size(); ++i) points[i][cue] = at_jnd[i];
+    const PerceptionMatrix p = identification_confusion(cues_of(points));
+    for (std::size_t i = 0; i < at_jnd.size(); ++i) {
+      for (std::size_t j = 0; j < at_jnd.size(); ++j) {
+        const double low = j == 0 ? -HUGE_VAL : (at_jnd[j - 1] + at_jnd[j]) / 2.0 * per_jnd;
+        const double high = j + 1 == at_jnd.size() ? HUGE_VAL : (at_jnd[j] + at_jnd[j + 1]) / 2.0 * per_jnd;
+        const double x = at_jnd[i] * per_jnd;
+        EXPECT_NEAR(p[i][j], phi(high - x) - phi(low - x), 1e-12) << "cue " << cue << ", " << i << " -> " << j;
+      }
+    }
+  }
+}
+
+// Members along a diagonal of the cues: the middle one of three, close to one end, keeps most of
+// its choices within the near pair; the far member does not take them because each cue on its own
+// sees the middle one's cell squeezed (a member crowds another on the cue where they differ most,
+// once). Equal steps on every cue, and steps mostly of level as three lines 5 % and an octave apart
+// give through an ERM (the nearest-choice observer: about 0.23 and 0.33 for the far member).
+TEST(Identification, TheMiddleOfThreeAlongADiagonalIsNotHandedToTheFarMember) {
+  for (const auto& set : {std::vector<CueDistances>{{0, 0, 0}, {0.1, 0.1, 0.1}, {1, 1, 1}},
+                          std::vector<CueDistances>{{0, 0, 0}, {0.076, 0.013, 0.017}, {0.95, 0.134, 0.208}}}) {
+    const PerceptionMatrix p = identification_confusion(cues_of(set));
+    EXPECT_LT(p[1][2], 0.35) << "the far member takes the middle one's choices";
+    EXPECT_GT(p[1][0] + p[1][1], 0.65);
+    EXPECT_GT(p[2][2], p[2][1]);
+  }
+}
+
 TEST(InformationTransfer, MatchesTheEntropyFormAndItsBounds) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0.0, 1.0);
