@@ -1,6 +1,6 @@
 // Why the simulated participants of tests/study_fit/simulated (SimulatedParticipants.
 // OnePairConfused40PercentOfTheTimeIsPredictedWithin0Point15) get a model that predicts their 40 %
-// pair at about 0.26: neither a bias of the fit nor its lapse rate, but what the identification
+// pair at about 0.27: neither a bias of the fit nor its lapse rate, but what the identification
 // model can say about those trials. The images are that test's four textures as `vimg compare`
 // renders them (a; b 4 dB weaker; c at a third of a's frequency; d 17 dB weaker), the trials theirs
 // pooled over its three participants: a and b taken for each other 36 of 90 times each, c and d
