@@ -42,7 +42,7 @@ struct ParticipantAccuracy {
 };
 
 // The predicted confusion of a set from `vimg compare` (study/report_predicted.hpp), in the set's
-// image order, rows renormalised over the set's images (Luce's choice axiom), and its agreement
+// image order, rows renormalised over the set's images (attach_predictions), and its agreement
 // with the measured confusion (the comparison matrix with each row divided by its total).
 struct PredictedComparison {
   std::string source;  // the COMPARE.json as given

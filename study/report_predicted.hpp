@@ -19,8 +19,10 @@ namespace vimg::study {
 
 // Gives each set of `report` the first prediction that names all its images by stem, exactly once:
 // its rows and columns restricted to the set's images and each row renormalised to 1 (a participant
-// chooses within the set: Luce's choice axiom), the measured confusion, and their Pearson correlation
-// over the off-diagonal cells.
+// chooses within the set; exact for a prediction of the set's own images, an approximation for a
+// larger one: each image's cell depends on the other members and the context noise on the set's
+// range, docs/identification.md), the measured confusion, and their Pearson correlation over the
+// off-diagonal cells.
 // Returns a warning for each prediction that serves no set.
 std::vector<Diagnostic> attach_predictions(MatchingReport& report, const std::vector<PredictedConfusion>& predictions);
 
