@@ -83,6 +83,13 @@ void BM_CueMatrixTwentySignals(benchmark::State& state) {
 }
 BENCHMARK(BM_CueMatrixTwentySignals)->Unit(benchmark::kMillisecond);
 
+// Identification alone (identification_choice.hpp, O(n^3)) on the twenty signals' cue matrix.
+void BM_IdentificationTwentySignals(benchmark::State& state) {
+  const CueMatrix cues = cue_matrix(analyse_all().discrimination);
+  for (auto _ : state) benchmark::DoNotOptimize(identification_confusion(cues));
+}
+BENCHMARK(BM_IdentificationTwentySignals)->Unit(benchmark::kMillisecond);
+
 // Everything `vimg compare` asks of the model after rendering: analyse, both matrices, confusion.
 void BM_CompareTwentySignals(benchmark::State& state) {
   for (auto _ : state) {
