@@ -9,7 +9,7 @@ editor=$(realpath "$1")
 art=$2
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/gui_driver.sh"
-gui_setup 401 440
+gui_setup
 cp "$here/../../assets/examples/smiley.vimg" "$art/smiley.vimg"
 
 current=audition

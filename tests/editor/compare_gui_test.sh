@@ -9,7 +9,7 @@ editor=$(realpath "$1")
 art=$2
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/gui_driver.sh"
-gui_setup 441 480
+gui_setup
 data="$here/../data/compare"
 mkdir -p "$art/lib"
 cp "$data/surface.vimg" "$art/lib/copy_a.vimg"

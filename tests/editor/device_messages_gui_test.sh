@@ -10,7 +10,7 @@ art=$2
 here=$(cd "$(dirname "$0")" && pwd)
 
 source "$here/gui_driver.sh"
-gui_setup 481 520
+gui_setup
 export SDL_AUDIODRIVER=dummy
 
 mkdir -p "$art/gone"

@@ -14,7 +14,7 @@ export HOME="$out/home" XDG_CONFIG_HOME="$out/home/.config" XDG_STATE_HOME="$out
 mkdir -p "$HOME"
 source "$here/../xvfb_display.sh"
 trap stop_xvfb EXIT
-start_xvfb 161 200 1400x900x24 "$out/xvfb.log"
+start_xvfb 1400x900x24 "$out/xvfb.log"
 
 python3 "$here/make_many_primitives.py" 10000 "$out/many.vimg"
 echo "== frame time, 10 000 primitives, 3 runs of 300 frames"

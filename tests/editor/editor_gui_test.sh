@@ -11,7 +11,7 @@ src=$(cd "$here/../.." && pwd)
 check() { python3 "$here/gui_check.py" "$@"; }
 
 source "$here/gui_driver.sh"
-gui_setup 91 160
+gui_setup
 export SDL_AUDIODRIVER=dummy
 
 echo "== draw one of each primitive, edit, undo/redo, save, reopen"

@@ -11,7 +11,7 @@ editor=$(realpath "$1")
 art=$2
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/gui_driver.sh"
-gui_setup 321 360
+gui_setup
 lra="$here/../../assets/profiles/lra-175hz-drv2605l.xml"
 
 cat >"$art/two.vimg" <<'VIMG'

@@ -10,7 +10,7 @@ art=$2
 here=$(cd "$(dirname "$0")" && pwd)
 check() { python3 "$here/gui_check.py" "$@"; }
 source "$here/gui_driver.sh"
-gui_setup 281 320
+gui_setup
 mkdir -p "$art/work/lib/sub"
 
 cat >"$art/work/lib/sub/pic.vimg" <<'VIMG'

@@ -2,8 +2,8 @@
 # The caller sets `art` (artifact folder), `current` (the run's name) before using these, and
 # calls `cleanup` from its EXIT trap. The editor prints its layout (--print-layout) and the
 # functions turn millimetres on the page into screen pixels from it.
-#   gui_setup FIRST LAST    check the tools, a fresh $art with its own HOME, Xvfb on a display
-#                           numbered FIRST..LAST (stopped on exit)
+#   gui_setup               check the tools, a fresh $art with its own HOME, Xvfb on a display
+#                           of its own (tests/xvfb_display.sh; stopped on exit)
 #   start NAME ARGS...      launch the editor (--print-layout --zoom 2 ARGS), wait for the canvas
 #   move_mm/click_mm X Y    move to / click at a page point; drag_mm X0 Y0 X1 Y1
 #   key KEYS...             xdotool key; widget NAME clicks a printed widget in its middle;
@@ -22,7 +22,7 @@ gui_setup() {
   export HOME="$art/home" XDG_CONFIG_HOME="$art/home/.config" XDG_STATE_HOME="$art/home/.state"
   source "$(dirname "${BASH_SOURCE[0]}")/../xvfb_display.sh"
   trap cleanup EXIT
-  start_xvfb "$1" "$2" 1400x900x24 "$art/xvfb.log"
+  start_xvfb 1400x900x24 "$art/xvfb.log"
 }
 cleanup() {
   if [ -n "$editor_pid" ]; then kill -9 "$editor_pid" 2>/dev/null || true; fi

@@ -19,7 +19,7 @@ with open(sys.argv[1], "w") as f:
 PY
 source "$(dirname "$0")/../xvfb_display.sh"
 trap stop_xvfb EXIT
-start_xvfb 201 240 1400x900x24 "$out/xvfb.log"
+start_xvfb 1400x900x24 "$out/xvfb.log"
 status=0
 "$editor" "$out/huge.vimg" --output none --recovery-dir "$out/rec" --benchmark-frames 5 >"$out/log.txt" 2>&1 || status=$?
 if [ "$status" -ne 0 ]; then

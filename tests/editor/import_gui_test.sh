@@ -13,7 +13,7 @@ art=$3
 here=$(cd "$(dirname "$0")" && pwd)
 examples=$(realpath "$here/../../examples/import")
 source "$here/gui_driver.sh"
-gui_setup 401 440
+gui_setup
 mkdir -p "$art/work"
 printf '<svg xmlns="http://www.w3.org/2000/svg" width="10mm" height="10mm"><rect width="3"' >"$art/work/broken.svg"
 

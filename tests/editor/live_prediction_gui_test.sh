@@ -13,7 +13,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 src=$(cd "$here/../.." && pwd)
 
 source "$here/gui_driver.sh"
-gui_setup 641 680
+gui_setup
 export SDL_AUDIODRIVER=dummy
 
 # The horizon of the default path: the mouse's default panel latency (a fresh HOME keeps no

@@ -9,7 +9,7 @@ vimg=$(realpath "$2")
 art=$3
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/gui_driver.sh"
-gui_setup 281 320
+gui_setup
 
 cat >"$art/gain3.vimg" <<'VIMG'
 <?xml version="1.0" encoding="UTF-8"?>

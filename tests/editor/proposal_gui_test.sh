@@ -12,7 +12,7 @@ vimg=$(realpath "$2")
 art=$3
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/gui_driver.sh"
-gui_setup 481 520
+gui_setup
 source "$here/library_driver.sh"
 check() { python3 "$here/gui_check.py" "$@"; }
 examples="$here/../../assets/examples/separate"

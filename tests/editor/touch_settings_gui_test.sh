@@ -12,7 +12,7 @@ editor=$(realpath "$1")
 art=$2
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/gui_driver.sh"
-gui_setup 561 600
+gui_setup
 export SDL_AUDIODRIVER=dummy
 settings="$XDG_CONFIG_HOME/vimg-editor/touch-latency.txt"
 mkdir -p "$(dirname "$settings")"

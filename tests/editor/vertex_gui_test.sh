@@ -10,7 +10,7 @@ art=$2
 here=$(cd "$(dirname "$0")" && pwd)
 check() { python3 "$here/gui_check.py" "$@"; }
 source "$here/gui_driver.sh"
-gui_setup 241 280
+gui_setup
 
 cat >"$art/shapes.vimg" <<'VIMG'
 <?xml version="1.0" encoding="UTF-8"?>

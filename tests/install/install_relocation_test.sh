@@ -67,7 +67,7 @@ fi
 editor="$prefix/bin/vimg-editor"
 source "$source_dir/tests/editor/gui_driver.sh"
 art="$root/gui"  # gui_setup empties its folder
-gui_setup 361 400
+gui_setup
 cd "$root/empty"
 current=installed
 start installed "$data/examples/smiley.vimg" --actuator lra-175hz-drv2605l --output none --recovery-dir "$root/recovery"

@@ -20,7 +20,7 @@ cat > "$work/look.vimg" <<'XML'
 </vibroimage>
 XML
 "$vimg" convert "$work/look.vimg" "$work/look.png" --scale 5
-start_xvfb 121 140 1024x768x24 "$work/xvfb.log"
+start_xvfb 1024x768x24 "$work/xvfb.log"
 trap stop_xvfb EXIT
 # Canvas 120 x 80 mm at 5 px/mm = 600 x 400 px, centred in the 800 x 600 window at (100, 100).
 SDL_AUDIODRIVER=dummy "$player" "$work/look.vimg" --window 800x600 --px-per-mm 5 --output "wav:$work/out.wav" >"$work/player.log" 2>&1 &

@@ -21,7 +21,7 @@ cat > "$work/study/study.xml" <<'XML'
   <set name="same-complexity"><image file="surface_top.vimg"/><image file="surface_bottom.vimg"/></set>
 </matchingStudy>
 XML
-start_xvfb 241 260 1024x768x24 "$work/xvfb.log"
+start_xvfb 1024x768x24 "$work/xvfb.log"
 trap stop_xvfb EXIT
 SDL_AUDIODRIVER=dummy "$player" --study "$work/study/study.xml" --participant X1 --results "$work/results" \
   --window 1024x768 --px-per-mm 3 --output "wav:$work/out.wav" >"$work/player.log" 2>&1 &

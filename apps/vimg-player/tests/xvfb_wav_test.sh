@@ -14,7 +14,7 @@ cat > "$work/plate.vimg" <<'XML'
 XML
 
 source "$(dirname "$0")/../../../tests/xvfb_display.sh"
-start_xvfb 90 120 1024x768x24 "$work/xvfb.log"
+start_xvfb 1024x768x24 "$work/xvfb.log"
 trap stop_xvfb EXIT
 
 # Canvas 100 x 60 mm at 5 px/mm = 500 x 300 px, centred in the 800 x 600 window.
