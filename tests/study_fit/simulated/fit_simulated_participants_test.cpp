@@ -101,7 +101,7 @@ TEST_F(SimulatedParticipants, TheFitRecoversTheKnownConstantsWithinItsIntervals)
   ASSERT_EQ(cues.size(), 4u);
   DiscriminationConstants truth;
   truth.lapse_rate = 0.08;
-  truth.cue_weight = {1.0, 2.0, 0.6};  // every pair but a-b told apart: the lapse shows
+  truth.cue_weight = {1.0, 4.0, 0.6};  // a and b 2 pitch JNDs apart (0.5 by default), the rest far: the lapse shows
   const std::vector<std::string> participants{"S1", "S2", "S3", "S4"};
   SplitMix random(20261127);
   for (const std::string& p : participants) {
