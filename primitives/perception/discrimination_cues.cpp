@@ -10,7 +10,6 @@
 #include "primitives/perception/hann_window.hpp"
 #include "primitives/perception/perception_rate.hpp"
 #include "primitives/perception/power_spectrum.hpp"
-#include "primitives/perception/stsim.hpp"
 
 namespace vimg {
 
