@@ -78,6 +78,40 @@ TEST(Identification, RowsSumToOneIdenticalImagesSplitAndTheLapseIsUniform) {
   EXPECT_TRUE(identification_confusion({}).empty());
 }
 
+// Any cue matrix, not only distances of points: asymmetric, violating the triangle inequality,
+// with zeros, NaN, infinities, negative and huge values and short rows, under any weights. Every
+// entry is finite and in [0, 1], every row sums to 1 and the diagonal is no less than 0.
+TEST(Identification, AnyCueMatrixGivesRowsOfProbabilities) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double odd[] = {0.0, NAN, HUGE_VAL, -HUGE_VAL, -3.0, 1e300, 1e-300};
+  const auto value = [&]() { return u(rng) < 0.15 ? odd[static_cast<std::size_t>(u(rng) * 7) % 7] : u(rng) * 12.0; };
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::size_t n = 1 + static_cast<std::size_t>(u(rng) * 9);
+    CueMatrix d(n, std::vector<CueDistances>(n));
+    for (auto& row : d) {
+      if (u(rng) < 0.05) row.resize(static_cast<std::size_t>(u(rng) * static_cast<double>(n)));
+      for (CueDistances& pair : row)
+        for (double& x : pair) x = value();
+    }
+    DiscriminationConstants k;
+    for (double& w : k.cue_weight) w = u(rng) < 0.1 ? value() : 0.2 + 3.0 * u(rng);
+    k.lapse_rate = u(rng) < 0.1 ? value() : 0.1 * u(rng);
+    const PerceptionMatrix p = identification_confusion(d, k);
+    ASSERT_EQ(p.size(), n);
+    for (const auto& row : p) {
+      double sum = 0.0;
+      for (const double v : row) {
+        ASSERT_TRUE(std::isfinite(v)) << "trial " << trial;
+        EXPECT_GE(v, 0.0);
+        EXPECT_LE(v, 1.0 + 1e-12);
+        sum += v;
+      }
+      EXPECT_NEAR(sum, 1.0, 1e-9) << "trial " << trial;
+    }
+  }
+}
+
 // Rabinowitz, Houtsma, Durlach & Delhorne (1987): one-dimensional vibrotactile sets transfer 1-2
 // bits, growing little beyond six members; three-dimensional sets 4-5 bits. (Calibration: the
 // context noise was set on these ranges; docs/identification.md.)
