@@ -28,6 +28,7 @@ inline constexpr std::size_t kMaxSceneFileBytes = 4 * kMiB / kLimitScale;  // a 
 inline constexpr std::size_t kMaxCsvFileBytes = 64 * kMiB / kLimitScale;   // a gesture or probe-path CSV
 inline constexpr std::size_t kMaxNrrdHeaderBytes = 1 * kMiB / kLimitScale;  // the text header of a NRRD volume
 inline constexpr std::size_t kMaxNrrdFieldLineBytes = 800;  // one `field: value` line of a NRRD header (teem's messages overflow from 963)
+inline constexpr std::size_t kMaxNrrdAsciiSampleBytes = 256;  // one sample of ASCII NRRD data (teem scans each into a 1 KiB buffer)
 inline constexpr std::size_t kMaxVolumeFileBytes = 1024 * kMiB;  // a whole NRRD file (header and data)
 
 // --- XML structure (images and volume scenes; checked before tinyxml2 builds its tree) --------------

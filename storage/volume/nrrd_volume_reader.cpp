@@ -1,3 +1,4 @@
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -99,6 +100,18 @@ bool data_fits(std::string_view data, const TeemReadResult& head, std::size_t sa
   } else if (head.encoding == "ASCII" && samples > data.size() / 2 + 1) {  // a digit and a separator each
     list.error(line, where + "data holds fewer than the " + std::to_string(samples) + " samples the header needs");
     return false;
+  } else if (head.encoding == "ASCII") {
+    // teem scans each sample with fscanf("%s") into a fixed 1 KiB buffer: a longer one would
+    // overflow it (found by the fuzzer), so every whitespace-separated run is held to the limit.
+    std::size_t run = 0;
+    for (const char c : data) {
+      run = std::isspace(static_cast<unsigned char>(c)) ? 0 : run + 1;
+      if (run > kMaxNrrdAsciiSampleBytes) {
+        list.error(line, where + "an ASCII sample is longer than " + std::to_string(kMaxNrrdAsciiSampleBytes) + " bytes (limit " +
+                             std::to_string(kMaxNrrdAsciiSampleBytes) + ")");
+        return false;
+      }
+    }
   } else if (head.encoding == "hex" && data.size() < 2 * bytes) {
     list.error(line, where + "data holds fewer than the " + std::to_string(2 * bytes) + " hex digits the header needs");
     return false;

@@ -87,6 +87,19 @@ TEST(NrrdLimits, AKeyValueLineLongerThanTheLimitIsRefused) {
   EXPECT_TRUE(parse_nrrd(head + "# " + std::string(4 * kMaxNrrdFieldLineBytes, 'c') + "\n\n\x01", "c.nrrd").ok());
 }
 
+// teem scans each ASCII sample into a fixed 1 KiB buffer (fscanf "%s"): a longer one overflowed
+// it, and the fuzzer found the wild pointer that followed. Held to kMaxNrrdAsciiSampleBytes.
+TEST(NrrdLimits, AnAsciiSampleLongerThanTheLimitIsRefused) {
+  const std::string head = "NRRD0004\ntype: float\ndimension: 3\nsizes: 2 1 1\nencoding: ascii\n\n";
+  const std::string at_limit = "1." + std::string(kMaxNrrdAsciiSampleBytes - 2, '5');
+  EXPECT_TRUE(parse_nrrd(head + at_limit + " 2\n", "a.nrrd").ok()) << first_message(parse_nrrd(head + at_limit + " 2\n", "a.nrrd"));
+  for (const std::size_t length : {kMaxNrrdAsciiSampleBytes + 1, std::size_t{5000}}) {
+    const NrrdLoadResult r = parse_nrrd(head + "1 " + std::string(length, 'c') + "\n", "long.nrrd");
+    EXPECT_FALSE(r.ok());
+    EXPECT_NE(first_message(r).find("an ASCII sample is longer than 256 bytes (limit 256)"), std::string::npos) << first_message(r);
+  }
+}
+
 TEST(NrrdLimits, GzipDataLongerThanDeclaredIsRefused) {
   // 64 MiB of zeros deflate to about 64 KB; the header declares 4 bytes.
   const std::string head = "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 1\nencoding: gzip\n\n";
