@@ -26,23 +26,22 @@ double interval_mass(double lo, double hi) {
 // d'_c of every pair of a set, n x n, +inf where the cue matrix has no entry.
 class DPrimeTable {
  public:
-  DPrimeTable(const CueMatrix& d, const DiscriminationConstants& k) : n_(d.size()), v_(n_ * n_) {
+  DPrimeTable(const CueMatrix& d, const DiscriminationConstants& k) : n_(d.size()), v_(n_ * n_), main_cues_(n_ * n_, 0) {
     const std::array<double, kCueCount> ranges = cue_ranges_jnd(d);
     for (std::size_t i = 0; i < n_; ++i) {
       for (std::size_t j = 0; j < n_; ++j) {
         if (j < d[i].size()) v_[i * n_ + j] = identification_d_primes(d[i][j], ranges, k);
         else v_[i * n_ + j].fill(kInfinity);
+        for (std::size_t c = 0; c < kCueCount; ++c)
+          if (differs_most(i, j, c)) main_cues_[i * n_ + j] |= 1u << c;
       }
     }
   }
   std::size_t size() const { return n_; }
   double at(std::size_t i, std::size_t j, std::size_t c) const { return v_[i * n_ + j][c]; }
-  // Whether cue c is where i and j differ most: one cue per pair, the first of equals.
-  bool differ_most_on(std::size_t i, std::size_t j, std::size_t c) const {
-    for (std::size_t other = 0; other < kCueCount; ++other)
-      if (at(i, j, other) > at(i, j, c) || (other < c && at(i, j, other) == at(i, j, c))) return false;
-    return true;
-  }
+  // Whether cue c is where i and j differ most: one cue per pair, the first of equals (read from
+  // a mask made once per pair, not worked out again by every cell that asks).
+  bool differ_most_on(std::size_t i, std::size_t j, std::size_t c) const { return (main_cues_[i * n_ + j] >> c) & 1u; }
   // The distance of i and j on every cue but c, squared, Euclidean in d'.
   double off_cue_squared(std::size_t i, std::size_t j, std::size_t c) const {
     double sum = 0.0;
@@ -54,6 +53,13 @@ class DPrimeTable {
  private:
   std::size_t n_;
   std::vector<std::array<double, kCueCount>> v_;
+  bool differs_most(std::size_t i, std::size_t j, std::size_t c) const {
+    for (std::size_t other = 0; other < kCueCount; ++other)
+      if (at(i, j, other) > at(i, j, c) || (other < c && at(i, j, other) == at(i, j, c))) return false;
+    return true;
+  }
+
+  std::vector<unsigned> main_cues_;  // per pair, bit c set when differs_most(i, j, c)
 };
 
 // M_c(r | i, partner) of the header: the chance, under i's noise on cue c, that the observation
